@@ -1,0 +1,113 @@
+// The RenderMan Interface as an abstract target: one virtual function per RI request, like the
+// RenderMan C API (and pbrt's ParserTarget). The RIB parser calls it; SceneBuilder (core/)
+// builds scenes from it, RibWriter pretty-prints it (darc --cat).
+//
+// Every call carries the SourceLoc of the request name. A target reports a scene error in a
+// request by throwing RibError; the parser reports it with the position and continues at the
+// next request. Warnings go to the Diagnostics object the target was constructed with.
+#pragma once
+
+#include "parser/param_list.h"
+#include "parser/source_loc.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace darc {
+
+// A Basis argument: a standard name ("bezier", "b-spline", "catmull-rom", "hermite", "power")
+// or 16 numbers (row-major, rows multiply [t^3 t^2 t 1]).
+struct BasisArg {
+  std::string name;  // empty when a matrix was given
+  std::array<double, 16> matrix{};
+};
+
+class RiTarget {
+ public:
+  virtual ~RiTarget() = default;
+
+  virtual void version(double v, const SourceLoc& loc) = 0;
+  virtual void declare(const std::string& name, const std::string& declaration, const SourceLoc& loc) = 0;
+
+  // Options
+  virtual void option(const std::string& category, const ParamList& params, const SourceLoc& loc) = 0;
+  virtual void format(int xres, int yres, double pixel_aspect, const SourceLoc& loc) = 0;
+  virtual void frame_aspect_ratio(double ratio, const SourceLoc& loc) = 0;
+  virtual void screen_window(double left, double right, double bottom, double top, const SourceLoc& loc) = 0;
+  virtual void crop_window(double xmin, double xmax, double ymin, double ymax, const SourceLoc& loc) = 0;
+  virtual void projection(const std::string& name, const ParamList& params, const SourceLoc& loc) = 0;
+  virtual void clipping(double near_plane, double far_plane, const SourceLoc& loc) = 0;
+  virtual void pixel_samples(double xs, double ys, const SourceLoc& loc) = 0;
+  virtual void pixel_filter(const std::string& name, double xwidth, double ywidth, const SourceLoc& loc) = 0;
+  virtual void exposure(double gain, double gamma, const SourceLoc& loc) = 0;
+  virtual void quantize(const std::string& type, int one, int qmin, int qmax, double dither,
+                        const SourceLoc& loc) = 0;
+  virtual void display(const std::string& name, const std::string& type, const std::string& mode,
+                       const ParamList& params, const SourceLoc& loc) = 0;
+  virtual void hider(const std::string& type, const ParamList& params, const SourceLoc& loc) = 0;
+  // Requests that are accepted and have no effect on our images (Shutter, ShadingRate,
+  // ShadingInterpolation, ...): passed on with their raw numeric/string arguments so that a
+  // writer can reproduce them.
+  virtual void ignored_request(const std::string& request, const std::vector<double>& numbers,
+                               const std::vector<std::string>& strings, const SourceLoc& loc) = 0;
+
+  // Blocks
+  virtual void frame_begin(int number, const SourceLoc& loc) = 0;
+  virtual void frame_end(const SourceLoc& loc) = 0;
+  virtual void world_begin(const SourceLoc& loc) = 0;
+  virtual void world_end(const SourceLoc& loc) = 0;
+  virtual void attribute_begin(const SourceLoc& loc) = 0;
+  virtual void attribute_end(const SourceLoc& loc) = 0;
+  virtual void transform_begin(const SourceLoc& loc) = 0;
+  virtual void transform_end(const SourceLoc& loc) = 0;
+
+  // Transforms (matrices are 16 numbers, RIB row-major order)
+  virtual void identity(const SourceLoc& loc) = 0;
+  virtual void transform(const std::array<double, 16>& m, const SourceLoc& loc) = 0;
+  virtual void concat_transform(const std::array<double, 16>& m, const SourceLoc& loc) = 0;
+  virtual void translate(double dx, double dy, double dz, const SourceLoc& loc) = 0;
+  virtual void rotate(double angle_degrees, double ax, double ay, double az, const SourceLoc& loc) = 0;
+  virtual void scale(double sx, double sy, double sz, const SourceLoc& loc) = 0;
+  virtual void perspective(double fov_degrees, const SourceLoc& loc) = 0;
+  virtual void coordinate_system(const std::string& name, const SourceLoc& loc) = 0;
+  virtual void coord_sys_transform(const std::string& name, const SourceLoc& loc) = 0;
+
+  // Attributes
+  virtual void attribute(const std::string& category, const ParamList& params, const SourceLoc& loc) = 0;
+  virtual void orientation(const std::string& name, const SourceLoc& loc) = 0;
+  virtual void reverse_orientation(const SourceLoc& loc) = 0;
+  virtual void sides(int n, const SourceLoc& loc) = 0;
+  virtual void color(const std::array<float, 3>& rgb, const SourceLoc& loc) = 0;
+  virtual void opacity(const std::array<float, 3>& rgb, const SourceLoc& loc) = 0;
+  virtual void surface(const std::string& name, const ParamList& params, const SourceLoc& loc) = 0;
+  virtual void displacement(const std::string& name, const ParamList& params, const SourceLoc& loc) = 0;
+  // handle: the light's sequence number or name, as written.
+  virtual void light_source(const std::string& name, const std::string& handle, const ParamList& params,
+                            const SourceLoc& loc) = 0;
+  virtual void area_light_source(const std::string& name, const std::string& handle, const ParamList& params,
+                                 const SourceLoc& loc) = 0;
+  virtual void illuminate(const std::string& handle, bool on, const SourceLoc& loc) = 0;
+  virtual void basis(const BasisArg& ubasis, int ustep, const BasisArg& vbasis, int vstep, const SourceLoc& loc) = 0;
+
+  // Instancing
+  virtual void object_begin(const std::string& handle, const SourceLoc& loc) = 0;
+  virtual void object_end(const SourceLoc& loc) = 0;
+  virtual void object_instance(const std::string& handle, const SourceLoc& loc) = 0;
+
+  // Geometry
+  virtual void curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
+                      const ParamList& params, const SourceLoc& loc) = 0;
+  virtual void sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
+                      const SourceLoc& loc) = 0;
+  virtual void polygon(const ParamList& params, const SourceLoc& loc) = 0;
+  virtual void general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params,
+                               const SourceLoc& loc) = 0;
+  virtual void points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,
+                               const ParamList& params, const SourceLoc& loc) = 0;
+  virtual void points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
+                                       const std::vector<int>& indices, const ParamList& params,
+                                       const SourceLoc& loc) = 0;
+};
+
+}  // namespace darc
