@@ -1,0 +1,38 @@
+// The darc command line, parsed (DESIGN.md "Command-line contract").
+#pragma once
+
+#include "app/frame_list.h"
+#include "integrator/render_frame.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace darc {
+
+struct AppOptions {
+  std::vector<std::string> inputs;  // RIB files, "-" for stdin
+  std::string output;               // -o: overrides the Display name
+  std::string preview;              // --preview: also write an 8-bit preview (PNG/TIFF/JPEG)
+  int xres = 0, yres = 0;           // --res
+  HiderKind hider = HiderKind::Stochastic;
+  int pixel_samples = 0;            // --pixel-samples N (N x N); 0 keeps PixelSamples
+  int threads = 0;
+  std::optional<FrameList> frames;
+  bool skip_existing = false;
+  std::string stats_path;
+  uint32_t seed = 0;
+  bool quiet = false;
+  bool progress = false;  // force progress even when quiet would hide it
+  bool cat = false;       // --cat: print the parsed RIB instead of rendering
+  std::string ocio_config;
+};
+
+// Exit codes (DESIGN.md).
+enum ExitCode { kExitOk = 0, kExitRenderError = 1, kExitUsage = 2, kExitSceneError = 3 };
+
+// Parses argv. On --help/--version prints and sets exit_now = true with code 0; on a usage
+// error prints the message and returns kExitUsage with exit_now = true.
+AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_code);
+
+}  // namespace darc

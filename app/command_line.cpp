@@ -1,0 +1,61 @@
+#include "app/app_options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+namespace darc {
+
+AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_code) {
+  AppOptions o;
+  exit_now = false;
+  exit_code = kExitOk;
+  CLI::App app{"darc: distance-aware ray tracing of RenderMan curves"};
+  app.set_version_flag("--version", std::string("darc ") + DARC_VERSION);
+  app.add_option("files", o.inputs, "RIB files ('-' reads standard input)")->required();
+  app.add_option("-o,--output", o.output, "output file (overrides Display; '#' run or %04d takes the frame number)");
+  app.add_option("--preview", o.preview, "also write an 8-bit preview through the OCIO display transform");
+  std::string res;
+  app.add_option("--res", res, "resolution WxH (overrides Format)");
+  std::string hider = "stochastic";
+  app.add_option("--hider", hider, "distance|stochastic")->check(CLI::IsMember({"distance", "stochastic"}));
+  app.add_option("--pixel-samples", o.pixel_samples, "N x N samples per pixel (overrides PixelSamples)")
+      ->check(CLI::Range(1, 64));
+  app.add_option("--threads", o.threads, "threads, 0 = all cores")->check(CLI::Range(0, 1024));
+  std::string frames;
+  app.add_option("--frames", frames, "frames to render, e.g. 1-10,15,20-40x5");
+  app.add_flag("--skip-existing", o.skip_existing, "skip frames whose output file already exists");
+  app.add_option("--stats", o.stats_path, "write per-frame timings and counters as JSON");
+  app.add_option("--seed", o.seed, "random seed");
+  app.add_flag("-q,--quiet", o.quiet, "no progress output");
+  app.add_flag("--progress", o.progress, "progress output even when not wanted by default");
+  app.add_flag("--cat", o.cat, "print the parsed RIB (canonical form) instead of rendering");
+  app.add_option("--ocio-config", o.ocio_config, "OpenColorIO config for 8-bit outputs (default: $OCIO, else built in)");
+  try {
+    app.parse(argc, argv);
+    if (!res.empty()) {
+      int w = 0, h = 0;
+      char x = 0;
+      if (std::sscanf(res.c_str(), "%d%c%d", &w, &x, &h) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
+          w > 16384 || h > 16384)
+        throw CLI::ValidationError("--res", "expected WxH with 1 <= W, H <= 16384, found \"" + res + "\"");
+      o.xres = w;
+      o.yres = h;
+    }
+    if (!frames.empty()) {
+      std::string error;
+      o.frames = FrameList::parse(frames, error);
+      if (!o.frames) throw CLI::ValidationError("--frames", error);
+    }
+    o.hider = hider == "distance" ? HiderKind::Distance : HiderKind::Stochastic;
+  } catch (const CLI::ParseError& e) {
+    exit_now = true;
+    // CLI11 returns its own codes (100+) for usage errors; ours is 2 (libraries.md §6).
+    int rc = app.exit(e);
+    exit_code = rc == 0 ? kExitOk : kExitUsage;
+  }
+  return o;
+}
+
+}  // namespace darc

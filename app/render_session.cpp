@@ -1,0 +1,177 @@
+#include "app/render_session.h"
+
+#include "app/progress_reporter.h"
+#include "core/scene_builder.h"
+#include "integrator/color_config.h"
+#include "integrator/image_writer.h"
+#include "integrator/render_frame.h"
+#include "parser/rib_parser.h"
+#include "parser/rib_writer.h"
+
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+
+namespace darc {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+bool has_image_extension(const std::string& name) {
+  std::string ext = fs::path(name).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".png" || ext == ".jpg" || ext == ".jpeg";
+}
+
+// The file a frame goes to: -o or the Display name, with the frame number substituted, and an
+// extension chosen from the display type when the name has none we can write.
+std::string output_path(const AppOptions& o, const OutputSettings& out) {
+  std::string name = o.output.empty() ? out.display_name : o.output;
+  name = substitute_frame_number(name, out.frame_number);
+  if (!has_image_extension(name)) name += (out.display_type == "openexr" || out.display_type == "exr") ? ".exr" : ".tif";
+  return name;
+}
+
+int count_bad_pixels(const Image& image) {
+  int bad = 0;
+  for (float v : image.pixels)
+    if (!std::isfinite(v)) ++bad;
+  return bad;
+}
+
+nlohmann::json counters_json(const RayCounters& c) {
+  return {{"primary_rays", c.primary_rays},
+          {"secondary_rays", c.secondary_rays},
+          {"curve_segment_tests", c.segment_tests},
+          {"surface_tests", c.surface_tests},
+          {"grid_cells_visited", c.cells_visited},
+          {"rays_terminated_early", c.rays_terminated_early},
+          {"fragments", c.fragments},
+          {"peak_abuffer_length", c.peak_fragments},
+          {"rays_pruned_by_contribution", c.pruned_rays}};
+}
+
+}  // namespace
+
+int run_render_session(const AppOptions& o) {
+  Diagnostics diag;
+  for (const std::string& in : o.inputs) {
+    if (in != "-" && !fs::exists(in)) {
+      std::fprintf(stderr, "darc: input file \"%s\" does not exist\n", in.c_str());
+      return kExitUsage;
+    }
+  }
+
+  if (o.cat) {
+    RibWriter writer(std::cout);
+    RibParser parser(writer, diag);
+    for (const std::string& in : o.inputs) parser.parse_file(in);
+    return diag.error_count() > 0 ? kExitSceneError : kExitOk;
+  }
+
+  ColorConfig colors = ColorConfig::load(o.ocio_config);
+  ProgressReporter progress(o.progress || !o.quiet, isatty(STDERR_FILENO) != 0);
+  nlohmann::json stats_frames = nlohmann::json::array();
+  bool io_error = false;
+  std::set<std::string> written;
+  Clock::time_point segment_start = Clock::now();
+
+  SceneBuilder::Callbacks cb;
+  if (o.frames) cb.frame_selected = [&](int f) { return o.frames->contains(f); };
+  cb.frame_failed = [&](int) { segment_start = Clock::now(); };
+  cb.frame_ready = [&](Scene&& scene) {
+    FrameStats stats;
+    stats.parse_seconds = seconds_since(segment_start);
+    const std::string path = output_path(o, scene.output);
+    if (o.skip_existing && fs::exists(path) && image_file_is_readable(path)) {
+      if (!o.quiet) std::fprintf(stderr, "darc: %s exists: frame %d skipped\n", path.c_str(), scene.output.frame_number);
+      segment_start = Clock::now();
+      return;
+    }
+    if (written.count(path))
+      std::fprintf(stderr, "darc: warning: frame %d overwrites %s (use '#' or %%04d in the name)\n",
+                   scene.output.frame_number, path.c_str());
+    Clock::time_point t0 = Clock::now();
+    scene.build_acceleration();
+    stats.build_seconds = seconds_since(t0);
+
+    RenderOptions ro;
+    ro.hider = o.hider;
+    ro.threads = o.threads;
+    ro.seed = o.seed;
+    ro.progress = [&](double f) { progress.update(f); };
+    progress.start(path);
+    Image image = render_frame(scene, ro, diag, stats);
+    progress.finish();
+
+    ImageMetadata meta;
+    meta.software = std::string("darc ") + DARC_VERSION;
+    meta.hider = to_string(o.hider);
+    meta.samples_x = int(scene.output.pixel_samples[0]);
+    meta.samples_y = int(scene.output.pixel_samples[1]);
+    meta.render_seconds = stats.render_seconds;
+    int bad = count_bad_pixels(image);
+    if (bad > 0) std::fprintf(stderr, "darc: error: %d non-finite pixel values replaced by 0 in %s\n", bad, path.c_str());
+    WriteResult wr = write_image(path, image, meta, colors, scene.output.display_mode);
+    if (!wr.ok) {
+      std::fprintf(stderr, "darc: error: cannot write %s: %s\n", path.c_str(), wr.error.c_str());
+      io_error = true;
+    } else {
+      written.insert(path);
+      if (!o.quiet) std::fprintf(stderr, "darc: wrote %s\n", path.c_str());
+    }
+    if (!o.preview.empty()) {
+      std::string pv = substitute_frame_number(o.preview, scene.output.frame_number);
+      WriteResult pr = write_image(pv, image, meta, colors, "rgba");
+      if (!pr.ok) {
+        std::fprintf(stderr, "darc: error: cannot write %s: %s\n", pv.c_str(), pr.error.c_str());
+        io_error = true;
+      }
+    }
+    stats_frames.push_back({{"frame", scene.output.frame_number},
+                            {"output", path},
+                            {"hider", to_string(o.hider)},
+                            {"resolution", {scene.output.xres, scene.output.yres}},
+                            {"pixel_samples", {scene.output.pixel_samples[0], scene.output.pixel_samples[1]}},
+                            {"curve_segments", scene.curves.size()},
+                            {"parse_seconds", stats.parse_seconds},
+                            {"build_seconds", stats.build_seconds},
+                            {"render_seconds", stats.render_seconds},
+                            {"counters", counters_json(stats.counters)}});
+    segment_start = Clock::now();
+  };
+
+  FrameOverrides overrides;
+  overrides.xres = o.xres;
+  overrides.yres = o.yres;
+  overrides.pixel_samples = o.pixel_samples;
+  SceneBuilder builder(diag, cb, overrides);
+  RibParser parser(builder, diag);
+  for (const std::string& in : o.inputs) {
+    parser.parse_file(in);
+  }
+  builder.finish(SourceLoc{});
+
+  if (!o.stats_path.empty()) {
+    std::ofstream f(o.stats_path);
+    f << nlohmann::json{{"software", std::string("darc ") + DARC_VERSION}, {"frames", stats_frames}}.dump(2) << "\n";
+    if (!f) {
+      std::fprintf(stderr, "darc: error: cannot write %s\n", o.stats_path.c_str());
+      io_error = true;
+    }
+  }
+  if (diag.error_count() > 0) return kExitSceneError;
+  return io_error ? kExitRenderError : kExitOk;
+}
+
+}  // namespace darc

@@ -1,0 +1,50 @@
+// The RI graphics state kept by SceneBuilder: options (frame-scoped) and attributes
+// (AttributeBegin/End-scoped), following RI Spec 3.2 §4 and §5.
+#pragma once
+
+#include "core/camera.h"
+#include "core/curve_basis.h"
+#include "core/matrix.h"
+#include "core/scene.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace darc {
+
+// A light declared before WorldBegin (real files do this: Aqsis Misc/anim.rib). Its
+// transform is relative to camera space, so it becomes a world light at each WorldBegin.
+struct PendingLight {
+  LightDesc desc;  // shader_to_world here holds shader-to-camera
+  std::string handle;
+};
+
+struct Options {
+  OutputSettings output;
+  Camera::Projection projection = Camera::Projection::Orthographic;
+  double fov_degrees = 90;
+  std::optional<ScreenWindow> screen_window;  // explicit ScreenWindow
+  std::optional<double> frame_aspect;          // explicit FrameAspectRatio
+  double near_clip = 1e-10, far_clip = 1e38;
+  std::vector<PendingLight> pre_world_lights;
+};
+
+struct Attributes {
+  Vec3f color{1, 1, 1};
+  Vec3f opacity{1, 1, 1};
+  std::string surface = "defaultsurface";
+  ParamList surface_params;
+  SourceLoc surface_loc;
+  int sides = 2;
+  bool orientation_lh = true;  // RI default "outside" in the (left-handed) camera space
+  CurveBasis ubasis = standard_basis("bezier").value();
+  CurveBasis vbasis = standard_basis("bezier").value();
+  bool matte = false;
+  std::vector<uint32_t> lights_on;  // scene light indices
+  std::string area_light;
+  ParamList area_light_params;
+};
+
+}  // namespace darc

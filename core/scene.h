@@ -1,0 +1,92 @@
+// One frame's scene, world space, immutable once built: the camera, the output settings from
+// the RIB options, the geometry, and the attribute states (materials) and lights the
+// geometry refers to. Shaders and lights are kept as RIB names + parameters; shading/ turns
+// them into evaluators.
+#pragma once
+
+#include "core/bbox.h"
+#include "core/camera.h"
+#include "core/curve_set.h"
+#include "core/polygon.h"
+#include "core/sphere.h"
+#include "core/uniform_grid.h"
+#include "parser/param_list.h"
+#include "parser/source_loc.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace darc {
+
+// The attribute state a primitive was created with (one per primitive request).
+struct Material {
+  std::string surface = "defaultsurface";  // RIB shader name as given
+  ParamList surface_params;
+  SourceLoc surface_loc;
+  Vec3f color{1, 1, 1};    // Cs
+  Vec3f opacity{1, 1, 1};  // Os
+  int sides = 2;
+  // True when the geometric normal must be reversed (Orientation differs from the handedness
+  // of the object's coordinate system, RI spec 3.2 §4.2).
+  bool flip_normals = false;
+  bool matte = false;
+  std::vector<uint32_t> lights;  // indices into Scene::lights that illuminate this primitive
+  std::string emissive_area_light;  // AreaLightSource shader the geometry belongs to, if any
+  ParamList area_light_params;
+};
+
+struct LightDesc {
+  std::string shader;  // "ambientlight", "distantlight", "pointlight", "spotlight", or other
+  ParamList params;
+  Matrix4 shader_to_world;  // the current transform when LightSource was called
+  SourceLoc loc;
+};
+
+// Everything the RIB options say about the image, the sampling and the output.
+struct OutputSettings {
+  int frame_number = 0;
+  bool has_frame_number = false;
+  std::string display_name = "ri.tif";
+  std::string display_type = "file";
+  std::string display_mode = "rgba";
+  int xres = 640, yres = 480;
+  double pixel_aspect = 1;
+  double crop[4] = {0, 1, 0, 1};  // xmin xmax ymin ymax (NDC)
+  double pixel_samples[2] = {2, 2};
+  std::string filter_name = "gaussian";
+  double filter_width[2] = {2, 2};
+  double exposure_gain = 1, exposure_gamma = 1;
+  std::string hider = "hidden";
+};
+
+struct Scene {
+  Camera camera;
+  OutputSettings output;
+  CurveSet curves;
+  std::vector<Sphere> spheres;
+  std::vector<PolygonShape> polygons;
+  std::vector<uint32_t> sphere_material, polygon_material;  // per shape: index into materials
+  std::vector<Material> materials;
+  std::vector<LightDesc> lights;
+
+  // One grid over everything: primitive index p < curves.size() is a curve segment, then the
+  // spheres, then the polygons.
+  UniformGrid grid;
+  BBox bounds;
+
+  enum class PrimKind { CurveSegment, Sphere, Polygon };
+  PrimKind prim_kind(uint32_t p, uint32_t& local) const {
+    const uint32_t nc = uint32_t(curves.size()), ns = uint32_t(spheres.size());
+    if (p < nc) { local = p; return PrimKind::CurveSegment; }
+    if (p < nc + ns) { local = p - nc; return PrimKind::Sphere; }
+    local = p - nc - ns;
+    return PrimKind::Polygon;
+  }
+  size_t primitive_count() const { return curves.size() + spheres.size() + polygons.size(); }
+
+  // Builds the grid from the primitives (call once after all geometry is added).
+  void build_acceleration();
+};
+
+}  // namespace darc

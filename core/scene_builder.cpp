@@ -1,0 +1,719 @@
+#include "core/scene_builder.h"
+
+#include "core/curve_set.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace darc {
+
+namespace {
+
+// Largest image side we accept from Format or --res: a typo like "Format 32000 24000" would
+// otherwise allocate gigabytes.
+constexpr int kMaxResolution = 16384;
+// Largest N for N x N pixel samples.
+constexpr double kMaxPixelSamples = 64;
+
+const char* block_name(int b) {
+  static const char* names[] = {"FrameBegin", "WorldBegin", "AttributeBegin", "TransformBegin", "ObjectBegin"};
+  return names[b];
+}
+
+std::array<float, 3> first_color(const Param* p) {
+  if (!p || p->floats.size() < 3) return {1, 1, 1};
+  return {p->floats[0], p->floats[1], p->floats[2]};
+}
+
+}  // namespace
+
+SceneBuilder::SceneBuilder(Diagnostics& diag, Callbacks callbacks, FrameOverrides overrides)
+    : diag_(diag), callbacks_(std::move(callbacks)), overrides_(std::move(overrides)) {}
+
+SceneBuilder::~SceneBuilder() = default;
+
+// ---------------------------------------------------------------- blocks
+
+void SceneBuilder::push_block(Block b, const SourceLoc& loc) {
+  blocks_.push_back(b);
+  block_locs_.push_back(loc);
+}
+
+void SceneBuilder::pop_block(Block b, const char* request, const SourceLoc&) {
+  if (blocks_.empty() || blocks_.back() != b) {
+    std::string open = blocks_.empty() ? std::string("no block is open")
+                                       : std::string(block_name(int(blocks_.back()))) + " at " +
+                                             block_locs_.back().str() + " is still open";
+    throw RibError(std::string("unmatched ") + request + ": " + open);
+  }
+  blocks_.pop_back();
+  block_locs_.pop_back();
+}
+
+void SceneBuilder::finish(const SourceLoc& end) {
+  while (!blocks_.empty()) {
+    diag_.error(block_locs_.back(), block_name(int(blocks_.back())), "block is never closed");
+    Block b = blocks_.back();
+    blocks_.pop_back();
+    block_locs_.pop_back();
+    if (b == Block::World && scene_) {
+      scene_.reset();
+      in_world_ = false;
+      ++frames_failed_;
+      if (callbacks_.frame_failed) callbacks_.frame_failed(frame_number_);
+    }
+  }
+  (void)end;
+}
+
+void SceneBuilder::frame_begin(int number, const SourceLoc& loc) {
+  if (in_frame_ || in_world_) throw RibError("FrameBegin inside a frame or world block");
+  push_block(Block::Frame, loc);
+  saved_options_.push_back(options_);
+  saved_attributes_.push_back(attributes_);
+  saved_ctm_.push_back(ctm_);
+  in_frame_ = true;
+  frame_number_ = number;
+  has_frame_number_ = true;
+  errors_at_frame_start_ = diag_.error_count();
+  frame_skipped_ = callbacks_.frame_selected && !callbacks_.frame_selected(number);
+}
+
+void SceneBuilder::frame_end(const SourceLoc& loc) {
+  pop_block(Block::Frame, "FrameEnd", loc);
+  options_ = saved_options_.back();
+  saved_options_.pop_back();
+  attributes_ = saved_attributes_.back();
+  saved_attributes_.pop_back();
+  ctm_ = saved_ctm_.back();
+  saved_ctm_.pop_back();
+  in_frame_ = false;
+  frame_skipped_ = false;
+  has_frame_number_ = false;
+}
+
+void SceneBuilder::world_begin(const SourceLoc& loc) {
+  if (in_world_) throw RibError("WorldBegin inside a world block");
+  push_block(Block::World, loc);
+  ++world_blocks_seen_;
+  if (!in_frame_) {
+    // Without FrameBegin, frames are numbered by world block, from 1.
+    frame_number_ = world_blocks_seen_;
+    errors_at_frame_start_ = diag_.error_count();
+    frame_skipped_ = callbacks_.frame_selected && !callbacks_.frame_selected(frame_number_);
+  }
+  saved_attributes_.push_back(attributes_);
+  saved_ctm_.push_back(ctm_);
+  in_world_ = true;
+  start_scene();
+}
+
+void SceneBuilder::start_scene() {
+  scene_ = std::make_unique<Scene>();
+  Scene& s = *scene_;
+  OutputSettings out = options_.output;
+  if (overrides_.xres > 0) {
+    out.xres = overrides_.xres;
+    out.yres = overrides_.yres;
+  }
+  if (overrides_.pixel_samples > 0) out.pixel_samples[0] = out.pixel_samples[1] = overrides_.pixel_samples;
+  if (!overrides_.output.empty()) out.display_name = overrides_.output;
+  out.frame_number = frame_number_;
+  out.has_frame_number = has_frame_number_;
+  s.output = out;
+
+  Camera& cam = s.camera;
+  cam.projection = options_.projection;
+  cam.fov_degrees = options_.fov_degrees;
+  cam.xres = out.xres;
+  cam.yres = out.yres;
+  double aspect = options_.frame_aspect.value_or(out.xres * out.pixel_aspect / out.yres);
+  cam.screen = options_.screen_window.value_or(default_screen_window(aspect));
+  cam.near_clip = options_.near_clip;
+  cam.far_clip = options_.far_clip;
+  cam.world_to_camera = ctm_;
+  cam.finalize();
+  camera_to_world_ = cam.camera_to_world;
+
+  named_spaces_.clear();
+  named_spaces_["world"] = Matrix4{};
+  named_spaces_["camera"] = camera_to_world_;
+  light_handles_.clear();
+  attributes_.lights_on.clear();
+  for (const PendingLight& pl : options_.pre_world_lights) {
+    LightDesc d = pl.desc;
+    d.shader_to_world = pl.desc.shader_to_world * camera_to_world_;
+    s.lights.push_back(std::move(d));
+    uint32_t idx = uint32_t(s.lights.size() - 1);
+    light_handles_[pl.handle] = idx;
+    attributes_.lights_on.push_back(idx);
+  }
+  ctm_ = Matrix4{};
+  next_strand_id_ = 0;
+}
+
+void SceneBuilder::world_end(const SourceLoc& loc) {
+  pop_block(Block::World, "WorldEnd", loc);
+  attributes_ = saved_attributes_.back();
+  saved_attributes_.pop_back();
+  ctm_ = saved_ctm_.back();
+  saved_ctm_.pop_back();
+  in_world_ = false;
+  objects_.clear();
+  std::unique_ptr<Scene> scene = std::move(scene_);
+  if (frame_skipped_) return;
+  if (diag_.error_count() > errors_at_frame_start_) {
+    diag_.error(loc, "WorldEnd",
+                "frame " + std::to_string(frame_number_) + " not rendered: the scene has errors");
+    ++frames_failed_;
+    if (callbacks_.frame_failed) callbacks_.frame_failed(frame_number_);
+  } else {
+    ++frames_ready_;
+    if (callbacks_.frame_ready) callbacks_.frame_ready(std::move(*scene));
+  }
+  if (!in_frame_) errors_at_frame_start_ = diag_.error_count();
+}
+
+void SceneBuilder::attribute_begin(const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.attribute_begin(loc); })) return;
+  push_block(Block::Attribute, loc);
+  saved_attributes_.push_back(attributes_);
+  saved_ctm_.push_back(ctm_);
+}
+
+void SceneBuilder::attribute_end(const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.attribute_end(loc); })) return;
+  pop_block(Block::Attribute, "AttributeEnd", loc);
+  attributes_ = saved_attributes_.back();
+  saved_attributes_.pop_back();
+  ctm_ = saved_ctm_.back();
+  saved_ctm_.pop_back();
+}
+
+void SceneBuilder::transform_begin(const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.transform_begin(loc); })) return;
+  push_block(Block::Transform, loc);
+  saved_ctm_.push_back(ctm_);
+}
+
+void SceneBuilder::transform_end(const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.transform_end(loc); })) return;
+  pop_block(Block::Transform, "TransformEnd", loc);
+  ctm_ = saved_ctm_.back();
+  saved_ctm_.pop_back();
+}
+
+// ---------------------------------------------------------------- options
+
+bool SceneBuilder::option_allowed(const char* request, const SourceLoc& loc) {
+  if (!in_world_) return true;
+  diag_.warning(loc, request, "options cannot change inside WorldBegin/WorldEnd: ignored");
+  return false;
+}
+
+void SceneBuilder::option(const std::string& category, const ParamList& params, const SourceLoc& loc) {
+  if (category == "searchpath") {
+    for (const Param& p : params.params)
+      if (p.name != "archive")
+        diag_.warning_once("searchpath:" + p.name, loc, "Option",
+                           "searchpath \"" + p.name + "\" ignored (only \"archive\" is used)");
+    return;
+  }
+  diag_.warning_once("option:" + category, loc, "Option", "Option \"" + category + "\" has no effect in darc: ignored");
+}
+
+void SceneBuilder::format(int xres, int yres, double pixel_aspect, const SourceLoc& loc) {
+  if (!option_allowed("Format", loc)) return;
+  if (xres > kMaxResolution || yres > kMaxResolution)
+    throw RibError("resolution " + std::to_string(xres) + "x" + std::to_string(yres) + " exceeds the limit of " +
+                   std::to_string(kMaxResolution));
+  // RI: values <= 0 keep the current setting.
+  if (xres > 0) options_.output.xres = xres;
+  if (yres > 0) options_.output.yres = yres;
+  if (pixel_aspect > 0) options_.output.pixel_aspect = pixel_aspect;
+}
+
+void SceneBuilder::frame_aspect_ratio(double ratio, const SourceLoc& loc) {
+  if (!option_allowed("FrameAspectRatio", loc)) return;
+  if (!(ratio > 0)) throw RibError("frame aspect ratio must be positive");
+  options_.frame_aspect = ratio;
+}
+
+void SceneBuilder::screen_window(double l, double r, double b, double t, const SourceLoc& loc) {
+  if (!option_allowed("ScreenWindow", loc)) return;
+  if (l == r || b == t) throw RibError("ScreenWindow has zero width or height");
+  options_.screen_window = ScreenWindow{l, r, b, t};
+}
+
+void SceneBuilder::crop_window(double x0, double x1, double y0, double y1, const SourceLoc& loc) {
+  if (!option_allowed("CropWindow", loc)) return;
+  auto in01 = [](double v) { return v >= 0 && v <= 1; };
+  if (!in01(x0) || !in01(x1) || !in01(y0) || !in01(y1) || x0 >= x1 || y0 >= y1)
+    throw RibError("CropWindow needs 0 <= xmin < xmax <= 1 and 0 <= ymin < ymax <= 1");
+  double* c = options_.output.crop;
+  c[0] = x0, c[1] = x1, c[2] = y0, c[3] = y1;
+}
+
+void SceneBuilder::projection(const std::string& name, const ParamList& params, const SourceLoc& loc) {
+  if (!option_allowed("Projection", loc)) return;
+  if (name == "perspective") {
+    options_.projection = Camera::Projection::Perspective;
+    double fov = params.get_float("fov", 90.0f);
+    if (!(fov > 0 && fov < 180)) throw RibError("fov must be in (0, 180) degrees, found " + std::to_string(fov));
+    options_.fov_degrees = fov;
+  } else if (name == "orthographic") {
+    options_.projection = Camera::Projection::Orthographic;
+  } else {
+    diag_.warning(loc, "Projection", "unknown projection \"" + name + "\": using orthographic");
+    options_.projection = Camera::Projection::Orthographic;
+  }
+  // RI: the current transform becomes the screen transform and is reset (camera space starts here).
+  ctm_ = Matrix4{};
+}
+
+void SceneBuilder::clipping(double n, double f, const SourceLoc& loc) {
+  if (!option_allowed("Clipping", loc)) return;
+  if (!(n > 0) || !(f > n)) throw RibError("Clipping needs 0 < near < far");
+  options_.near_clip = n;
+  options_.far_clip = f;
+}
+
+void SceneBuilder::pixel_samples(double xs, double ys, const SourceLoc& loc) {
+  if (!option_allowed("PixelSamples", loc)) return;
+  if (!(xs >= 1) || !(ys >= 1) || xs > kMaxPixelSamples || ys > kMaxPixelSamples)
+    throw RibError("PixelSamples must be between 1 and " + std::to_string(int(kMaxPixelSamples)));
+  options_.output.pixel_samples[0] = xs;
+  options_.output.pixel_samples[1] = ys;
+}
+
+void SceneBuilder::pixel_filter(const std::string& name, double xw, double yw, const SourceLoc& loc) {
+  if (!option_allowed("PixelFilter", loc)) return;
+  static const char* known[] = {"box", "triangle", "gaussian", "catmull-rom", "sinc"};
+  if (std::find(std::begin(known), std::end(known), name) == std::end(known)) {
+    diag_.warning(loc, "PixelFilter", "unknown filter \"" + name + "\": using gaussian 2 2");
+    options_.output.filter_name = "gaussian";
+    options_.output.filter_width[0] = options_.output.filter_width[1] = 2;
+    return;
+  }
+  if (!(xw > 0) || !(yw > 0) || xw > 16 || yw > 16) throw RibError("filter widths must be in (0, 16]");
+  options_.output.filter_name = name;
+  options_.output.filter_width[0] = xw;
+  options_.output.filter_width[1] = yw;
+}
+
+void SceneBuilder::exposure(double gain, double gamma, const SourceLoc& loc) {
+  if (!option_allowed("Exposure", loc)) return;
+  if (!(gamma > 0)) throw RibError("Exposure gamma must be positive");
+  options_.output.exposure_gain = gain;
+  options_.output.exposure_gamma = gamma;
+}
+
+void SceneBuilder::quantize(const std::string& type, int one, int, int, double, const SourceLoc& loc) {
+  if (!option_allowed("Quantize", loc)) return;
+  diag_.warning_once("quantize", loc, "Quantize",
+                     "Quantize \"" + type + "\" " + std::to_string(one) +
+                         " ignored: EXR is written as half float, 8-bit formats through the OCIO display transform");
+}
+
+void SceneBuilder::display(const std::string& name, const std::string& type, const std::string& mode,
+                           const ParamList&, const SourceLoc& loc) {
+  if (!option_allowed("Display", loc)) return;
+  if (!name.empty() && name[0] == '+') {
+    diag_.warning_once("display+", loc, "Display", "additional displays (\"+name\") are not supported: ignored");
+    return;
+  }
+  static const char* file_types[] = {"file", "tiff", "openexr", "exr", "png", "framebuffer", "it"};
+  if (std::find(std::begin(file_types), std::end(file_types), type) == std::end(file_types))
+    diag_.warning_once("displaytype:" + type, loc, "Display",
+                       "display type \"" + type + "\" unknown: writing a file chosen by the name's extension");
+  else if (type == "framebuffer" || type == "it")
+    diag_.warning_once("displaytype:" + type, loc, "Display",
+                       "display type \"" + type + "\" has no window in darc: writing the file instead");
+  static const char* modes[] = {"rgb", "rgba", "z", "rgbz", "rgbaz", "a"};
+  std::string m = mode;
+  if (std::find(std::begin(modes), std::end(modes), m) == std::end(modes)) {
+    diag_.warning(loc, "Display", "display mode \"" + mode + "\" not supported: using rgba");
+    m = "rgba";
+  }
+  options_.output.display_name = name;
+  options_.output.display_type = type;
+  options_.output.display_mode = m;
+}
+
+void SceneBuilder::hider(const std::string& type, const ParamList&, const SourceLoc& loc) {
+  if (!option_allowed("Hider", loc)) return;
+  options_.output.hider = type;
+}
+
+void SceneBuilder::ignored_request(const std::string& request, const std::vector<double>&,
+                                   const std::vector<std::string>&, const SourceLoc& loc) {
+  static const char* silent[] = {"Shutter", "ShadingRate", "ShadingInterpolation", "Matte", "Bound", "ErrorHandler",
+                                 "ArchiveRecord", "Displacement", "RelativeDetail", "Detail", "DetailRange",
+                                 "ColorSamples", "PixelVariance", "GeometricApproximation"};
+  if (request == "Matte" && in_world_) return;  // handled as not-a-holdout (see README)
+  if (std::find(std::begin(silent), std::end(silent), request) != std::end(silent)) return;
+  diag_.warning_once("ignored:" + request, loc, request, "not supported by darc: ignored");
+}
+
+// ---------------------------------------------------------------- transforms
+
+void SceneBuilder::set_ctm(const Matrix4& m) { ctm_ = m; }
+void SceneBuilder::concat(const Matrix4& m) { ctm_ = m * ctm_; }
+
+void SceneBuilder::identity(const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.identity(loc); })) return;
+  // Inside the world block, Identity means world space (Aqsis, PRMan).
+  set_ctm(Matrix4{});
+}
+
+void SceneBuilder::transform(const std::array<double, 16>& m, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.transform(m, loc); })) return;
+  set_ctm(Matrix4::from_row_major(m.data()));
+}
+
+void SceneBuilder::concat_transform(const std::array<double, 16>& m, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.concat_transform(m, loc); })) return;
+  concat(Matrix4::from_row_major(m.data()));
+}
+
+void SceneBuilder::translate(double dx, double dy, double dz, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.translate(dx, dy, dz, loc); })) return;
+  concat(Matrix4::translate({dx, dy, dz}));
+}
+
+void SceneBuilder::rotate(double angle, double ax, double ay, double az, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.rotate(angle, ax, ay, az, loc); })) return;
+  if (ax == 0 && ay == 0 && az == 0) throw RibError("Rotate axis is the zero vector");
+  concat(Matrix4::rotate(angle, {ax, ay, az}));
+}
+
+void SceneBuilder::scale(double sx, double sy, double sz, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.scale(sx, sy, sz, loc); })) return;
+  concat(Matrix4::scale({sx, sy, sz}));
+}
+
+void SceneBuilder::perspective(double fov, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.perspective(fov, loc); })) return;
+  if (!(fov > 0 && fov < 180)) throw RibError("Perspective fov must be in (0, 180)");
+  concat(Matrix4::perspective(fov));
+}
+
+void SceneBuilder::coordinate_system(const std::string& name, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.coordinate_system(name, loc); })) return;
+  if (!in_world_) {
+    diag_.warning(loc, "CoordinateSystem", "named spaces before WorldBegin are not supported: ignored");
+    return;
+  }
+  named_spaces_[name] = ctm_;
+}
+
+void SceneBuilder::coord_sys_transform(const std::string& name, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.coord_sys_transform(name, loc); })) return;
+  auto it = named_spaces_.find(name);
+  if (!in_world_ || it == named_spaces_.end()) throw RibError("unknown coordinate system \"" + name + "\"");
+  set_ctm(it->second);
+}
+
+// ---------------------------------------------------------------- attributes
+
+void SceneBuilder::attribute(const std::string& category, const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.attribute(category, params, loc); })) return;
+  for (const Param& p : params.params)
+    diag_.warning_once("attribute:" + category + ":" + p.name, loc, "Attribute",
+                       "Attribute \"" + category + "\" \"" + p.name + "\" has no effect in darc: ignored");
+}
+
+bool SceneBuilder::object_space_left_handed() const {
+  // Camera space is left-handed; a transform with a negative determinant flips handedness.
+  double det = in_world_ ? (ctm_ * scene_->camera.world_to_camera).determinant() : ctm_.determinant();
+  return det >= 0;
+}
+
+void SceneBuilder::orientation(const std::string& name, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.orientation(name, loc); })) return;
+  if (name == "lh") attributes_.orientation_lh = true;
+  else if (name == "rh") attributes_.orientation_lh = false;
+  else if (name == "outside") attributes_.orientation_lh = object_space_left_handed();
+  else if (name == "inside") attributes_.orientation_lh = !object_space_left_handed();
+  else throw RibError("unknown orientation \"" + name + "\" (expected outside, inside, lh or rh)");
+}
+
+void SceneBuilder::reverse_orientation(const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.reverse_orientation(loc); })) return;
+  attributes_.orientation_lh = !attributes_.orientation_lh;
+}
+
+void SceneBuilder::sides(int n, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.sides(n, loc); })) return;
+  if (n != 1 && n != 2) throw RibError("Sides must be 1 or 2, found " + std::to_string(n));
+  attributes_.sides = n;
+}
+
+void SceneBuilder::color(const std::array<float, 3>& rgb, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.color(rgb, loc); })) return;
+  attributes_.color = {rgb[0], rgb[1], rgb[2]};
+}
+
+void SceneBuilder::opacity(const std::array<float, 3>& rgb, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.opacity(rgb, loc); })) return;
+  attributes_.opacity = {std::clamp(rgb[0], 0.0f, 1.0f), std::clamp(rgb[1], 0.0f, 1.0f),
+                         std::clamp(rgb[2], 0.0f, 1.0f)};
+}
+
+void SceneBuilder::surface(const std::string& name, const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.surface(name, params, loc); })) return;
+  attributes_.surface = name;
+  attributes_.surface_params = params;
+  attributes_.surface_loc = loc;
+}
+
+void SceneBuilder::displacement(const std::string& name, const ParamList&, const SourceLoc& loc) {
+  if (name != "null")
+    diag_.warning_once("displacement", loc, "Displacement", "displacement shaders are not supported: ignored");
+}
+
+void SceneBuilder::add_light(const std::string& name, const std::string& handle, const ParamList& params,
+                             const SourceLoc& loc) {
+  LightDesc d{name, params, ctm_, loc};
+  if (!in_world_) {
+    diag_.warning_once("prelight", loc, "LightSource",
+                       "light declared before WorldBegin: placed relative to the camera and used for every frame");
+    options_.pre_world_lights.push_back({std::move(d), handle});
+    return;
+  }
+  scene_->lights.push_back(std::move(d));
+  uint32_t idx = uint32_t(scene_->lights.size() - 1);
+  light_handles_[handle] = idx;
+  attributes_.lights_on.push_back(idx);
+}
+
+void SceneBuilder::light_source(const std::string& name, const std::string& handle, const ParamList& params,
+                                const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.light_source(name, handle, params, loc); })) return;
+  add_light(name, handle, params, loc);
+}
+
+void SceneBuilder::area_light_source(const std::string& name, const std::string& handle, const ParamList& params,
+                                     const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.area_light_source(name, handle, params, loc); })) return;
+  diag_.warning_once("arealight", loc, "AreaLightSource",
+                     "area lights do not illuminate other objects in darc: their geometry is drawn emissive");
+  attributes_.area_light = name;
+  attributes_.area_light_params = params;
+}
+
+void SceneBuilder::illuminate(const std::string& handle, bool on, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.illuminate(handle, on, loc); })) return;
+  auto it = light_handles_.find(handle);
+  if (it == light_handles_.end()) throw RibError("unknown light handle \"" + handle + "\"");
+  auto& v = attributes_.lights_on;
+  auto pos = std::find(v.begin(), v.end(), it->second);
+  if (on && pos == v.end()) v.push_back(it->second);
+  if (!on && pos != v.end()) v.erase(pos);
+}
+
+void SceneBuilder::basis(const BasisArg& u, int ustep, const BasisArg& v, int vstep, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.basis(u, ustep, v, vstep, loc); })) return;
+  auto resolve = [&](const BasisArg& a, int step) -> CurveBasis {
+    if (step < 1) throw RibError("basis step must be at least 1, found " + std::to_string(step));
+    if (a.name.empty()) return CurveBasis::from_matrix(a.matrix, step);
+    auto b = standard_basis(a.name);
+    if (!b) throw RibError("unknown basis \"" + a.name + "\"");
+    b->step = step;
+    return *b;
+  };
+  CurveBasis ub = resolve(u, ustep), vb = resolve(v, vstep);
+  attributes_.ubasis = ub;
+  attributes_.vbasis = vb;
+}
+
+// ---------------------------------------------------------------- instancing
+
+bool SceneBuilder::record(std::function<void(SceneBuilder&)> call) {
+  if (!recording_) return false;
+  recording_->push_back(std::move(call));
+  return true;
+}
+
+void SceneBuilder::object_begin(const std::string& handle, const SourceLoc& loc) {
+  if (recording_) throw RibError("ObjectBegin cannot nest");
+  push_block(Block::Object, loc);
+  recording_ = &objects_[handle];
+  recording_->clear();
+}
+
+void SceneBuilder::object_end(const SourceLoc& loc) {
+  pop_block(Block::Object, "ObjectEnd", loc);
+  recording_ = nullptr;
+}
+
+void SceneBuilder::object_instance(const std::string& handle, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.object_instance(handle, loc); })) return;
+  auto it = objects_.find(handle);
+  if (it == objects_.end()) throw RibError("unknown object handle \"" + handle + "\"");
+  if (replaying_) throw RibError("ObjectInstance inside an object is not supported");
+  replaying_ = true;
+  // The object's requests run in their own attribute scope, with the current attributes.
+  Attributes saved_attr = attributes_;
+  Matrix4 saved_ctm = ctm_;
+  size_t depth = blocks_.size();
+  try {
+    for (auto& call : it->second) call(*this);
+  } catch (...) {
+    replaying_ = false;
+    throw;
+  }
+  replaying_ = false;
+  blocks_.resize(std::min(blocks_.size(), depth));
+  block_locs_.resize(blocks_.size());
+  attributes_ = saved_attr;
+  ctm_ = saved_ctm;
+}
+
+// ---------------------------------------------------------------- geometry
+
+bool SceneBuilder::building_geometry(const char* request, const SourceLoc& loc) {
+  if (!in_world_) throw RibError(std::string(request) + " outside WorldBegin/WorldEnd");
+  return !frame_skipped_ && scene_ != nullptr && (void(loc), true);
+}
+
+uint32_t SceneBuilder::make_material(const SourceLoc&) {
+  Material m;
+  m.surface = attributes_.surface;
+  m.surface_params = attributes_.surface_params;
+  m.surface_loc = attributes_.surface_loc;
+  m.color = attributes_.color;
+  m.opacity = attributes_.opacity;
+  m.sides = attributes_.sides;
+  m.flip_normals = attributes_.orientation_lh != object_space_left_handed();
+  m.matte = attributes_.matte;
+  m.lights = attributes_.lights_on;
+  m.emissive_area_light = attributes_.area_light;
+  m.area_light_params = attributes_.area_light_params;
+  scene_->materials.push_back(std::move(m));
+  return uint32_t(scene_->materials.size() - 1);
+}
+
+Vec3f SceneBuilder::to_world(const float* p) const {
+  return Vec3f(ctm_.transform_point(Vec3d{p[0], p[1], p[2]}));
+}
+
+namespace {
+
+std::optional<PrimvarInput> primvar(const ParamList& params, const char* name, int components) {
+  const Param* p = params.find(name);
+  if (!p) return std::nullopt;
+  if (p->decl.is_string() || p->decl.components() != components)
+    throw RibError(std::string("\"") + name + "\" must have " + std::to_string(components) +
+                   " numbers per value, declared as " + to_string(p->decl));
+  return PrimvarInput{p->decl.storage, p->floats, components};
+}
+
+// Reads "P" (3 floats per point) or "Pw" (4, divided by w) as 3-float points.
+std::vector<float> read_points(const ParamList& params, const char* request) {
+  if (const Param* p = params.find("P")) {
+    if (p->decl.components() != 3) throw RibError("\"P\" must be declared with 3 numbers per point");
+    return p->floats;
+  }
+  if (const Param* p = params.find("Pw")) {
+    if (p->decl.components() != 4) throw RibError("\"Pw\" must be declared with 4 numbers per point");
+    std::vector<float> out;
+    out.reserve(p->floats.size() / 4 * 3);
+    for (size_t i = 0; i + 3 < p->floats.size(); i += 4) {
+      float w = p->floats[i + 3];
+      if (w == 0) throw RibError("\"Pw\" has a point with w = 0");
+      out.insert(out.end(), {p->floats[i] / w, p->floats[i + 1] / w, p->floats[i + 2] / w});
+    }
+    return out;
+  }
+  throw RibError(std::string(request) + " needs \"P\" or \"Pw\"");
+}
+
+}  // namespace
+
+void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
+                          const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.curves(type, nvertices, wrap, params, loc); })) return;
+  if (!building_geometry("Curves", loc)) return;
+  if (type != "linear" && type != "cubic")
+    throw RibError("curve type must be \"linear\" or \"cubic\", found \"" + type + "\"");
+  if (wrap != "periodic" && wrap != "nonperiodic")
+    throw RibError("wrap must be \"periodic\" or \"nonperiodic\", found \"" + wrap + "\"");
+  CurvesInput in;
+  in.cubic = type == "cubic";
+  in.periodic = wrap == "periodic";
+  in.nvertices = nvertices;
+  in.basis = attributes_.vbasis;
+  in.P = read_points(params, "Curves");
+  in.p_components = 3;
+  in.width = primvar(params, "width", 1);
+  if (const Param* cw = params.find("constantwidth")) {
+    if (cw->floats.empty()) throw RibError("\"constantwidth\" needs a value");
+    in.constantwidth = cw->floats[0];
+  }
+  in.N = primvar(params, "N", 3);
+  in.Cs = primvar(params, "Cs", 3);
+  in.Os = primvar(params, "Os", 3);
+  in.default_cs = attributes_.color;
+  in.default_os = attributes_.opacity;
+  in.object_to_world = ctm_;
+  uint32_t material = make_material(loc);
+  append_curves(scene_->curves, in, material, next_strand_id_);
+}
+
+void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
+                          const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.sphere(radius, zmin, zmax, thetamax, params, loc); })) return;
+  if (!building_geometry("Sphere", loc)) return;
+  if (radius == 0 || thetamax == 0) return;  // empty surface
+  scene_->spheres.push_back(Sphere::make(radius, zmin, zmax, thetamax, ctm_));
+  scene_->sphere_material.push_back(make_material(loc));
+}
+
+void SceneBuilder::polygon(const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.polygon(params, loc); })) return;
+  std::vector<float> P = read_points(params, "Polygon");
+  general_polygon({int(P.size() / 3)}, params, loc);
+}
+
+void SceneBuilder::general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params,
+                                   const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.general_polygon(nverts_per_loop, params, loc); })) return;
+  std::vector<int> indices;
+  size_t total = 0;
+  for (int n : nverts_per_loop) {
+    if (n < 3) throw RibError("each loop needs at least 3 vertices, found " + std::to_string(n));
+    total += size_t(n);
+  }
+  for (size_t i = 0; i < total; ++i) indices.push_back(int(i));
+  points_general_polygons({int(nverts_per_loop.size())}, nverts_per_loop, indices, params, loc);
+}
+
+void SceneBuilder::points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,
+                                   const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.points_polygons(nverts_per_face, indices, params, loc); })) return;
+  std::vector<int> loops(nverts_per_face.size(), 1);
+  points_general_polygons(loops, nverts_per_face, indices, params, loc);
+}
+
+void SceneBuilder::points_general_polygons(const std::vector<int>& nloops_per_face,
+                                           const std::vector<int>& nverts_per_loop, const std::vector<int>& indices,
+                                           const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.points_general_polygons(nloops_per_face, nverts_per_loop, indices, params, loc); }))
+    return;
+  if (!building_geometry("PointsGeneralPolygons", loc)) return;
+  std::vector<float> P = read_points(params, "PointsGeneralPolygons");
+  std::vector<Vec3f> world(P.size() / 3);
+  for (size_t i = 0; i < world.size(); ++i) world[i] = to_world(&P[3 * i]);
+  std::string error;
+  std::vector<PolygonShape> shapes =
+      make_points_general_polygons(nloops_per_face, nverts_per_loop, indices, world, error);
+  if (!error.empty()) throw RibError(error);
+  uint32_t material = make_material(loc);
+  for (PolygonShape& s : shapes) {
+    scene_->polygons.push_back(std::move(s));
+    scene_->polygon_material.push_back(material);
+  }
+}
+
+}  // namespace darc

@@ -1,0 +1,168 @@
+// SceneBuilder: the RiTarget that keeps the RI graphics state and builds one Scene per frame
+// (per WorldBegin/WorldEnd block). Each finished frame is handed to a callback, so a
+// 50-frame file never holds more than one scene.
+#pragma once
+
+#include "core/graphics_state.h"
+#include "core/scene.h"
+#include "parser/diagnostics.h"
+#include "parser/ri_target.h"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace darc {
+
+struct FrameOverrides {
+  int xres = 0, yres = 0;             // --res (0: keep Format)
+  double pixel_samples = 0;           // --pixel-samples (0: keep PixelSamples)
+  std::string output;                 // -o (empty: keep Display name)
+};
+
+class SceneBuilder : public RiTarget {
+ public:
+  // Called at each WorldEnd whose frame had no errors. frame_failed is called for frames with
+  // errors (nothing must be written for them).
+  struct Callbacks {
+    std::function<bool(int frame_number)> frame_selected;  // may be empty: all frames
+    std::function<void(Scene&&)> frame_ready;
+    std::function<void(int frame_number)> frame_failed;
+  };
+
+  SceneBuilder(Diagnostics& diag, Callbacks callbacks, FrameOverrides overrides = {});
+  ~SceneBuilder() override;
+
+  int frames_rendered() const { return frames_ready_; }
+  int frames_failed() const { return frames_failed_; }
+  // Reports unclosed blocks at the end of input (call after parsing).
+  void finish(const SourceLoc& end);
+
+  // RiTarget
+  void version(double, const SourceLoc&) override {}
+  void declare(const std::string&, const std::string&, const SourceLoc&) override {}
+  void option(const std::string& category, const ParamList& params, const SourceLoc& loc) override;
+  void format(int xres, int yres, double pixel_aspect, const SourceLoc& loc) override;
+  void frame_aspect_ratio(double ratio, const SourceLoc& loc) override;
+  void screen_window(double l, double r, double b, double t, const SourceLoc& loc) override;
+  void crop_window(double x0, double x1, double y0, double y1, const SourceLoc& loc) override;
+  void projection(const std::string& name, const ParamList& params, const SourceLoc& loc) override;
+  void clipping(double n, double f, const SourceLoc& loc) override;
+  void pixel_samples(double xs, double ys, const SourceLoc& loc) override;
+  void pixel_filter(const std::string& name, double xw, double yw, const SourceLoc& loc) override;
+  void exposure(double gain, double gamma, const SourceLoc& loc) override;
+  void quantize(const std::string& type, int one, int qmin, int qmax, double dither, const SourceLoc& loc) override;
+  void display(const std::string& name, const std::string& type, const std::string& mode, const ParamList& params,
+               const SourceLoc& loc) override;
+  void hider(const std::string& type, const ParamList& params, const SourceLoc& loc) override;
+  void ignored_request(const std::string& request, const std::vector<double>& numbers,
+                       const std::vector<std::string>& strings, const SourceLoc& loc) override;
+
+  void frame_begin(int number, const SourceLoc& loc) override;
+  void frame_end(const SourceLoc& loc) override;
+  void world_begin(const SourceLoc& loc) override;
+  void world_end(const SourceLoc& loc) override;
+  void attribute_begin(const SourceLoc& loc) override;
+  void attribute_end(const SourceLoc& loc) override;
+  void transform_begin(const SourceLoc& loc) override;
+  void transform_end(const SourceLoc& loc) override;
+
+  void identity(const SourceLoc& loc) override;
+  void transform(const std::array<double, 16>& m, const SourceLoc& loc) override;
+  void concat_transform(const std::array<double, 16>& m, const SourceLoc& loc) override;
+  void translate(double dx, double dy, double dz, const SourceLoc& loc) override;
+  void rotate(double angle, double ax, double ay, double az, const SourceLoc& loc) override;
+  void scale(double sx, double sy, double sz, const SourceLoc& loc) override;
+  void perspective(double fov, const SourceLoc& loc) override;
+  void coordinate_system(const std::string& name, const SourceLoc& loc) override;
+  void coord_sys_transform(const std::string& name, const SourceLoc& loc) override;
+
+  void attribute(const std::string& category, const ParamList& params, const SourceLoc& loc) override;
+  void orientation(const std::string& name, const SourceLoc& loc) override;
+  void reverse_orientation(const SourceLoc& loc) override;
+  void sides(int n, const SourceLoc& loc) override;
+  void color(const std::array<float, 3>& rgb, const SourceLoc& loc) override;
+  void opacity(const std::array<float, 3>& rgb, const SourceLoc& loc) override;
+  void surface(const std::string& name, const ParamList& params, const SourceLoc& loc) override;
+  void displacement(const std::string& name, const ParamList& params, const SourceLoc& loc) override;
+  void light_source(const std::string& name, const std::string& handle, const ParamList& params,
+                    const SourceLoc& loc) override;
+  void area_light_source(const std::string& name, const std::string& handle, const ParamList& params,
+                         const SourceLoc& loc) override;
+  void illuminate(const std::string& handle, bool on, const SourceLoc& loc) override;
+  void basis(const BasisArg& u, int ustep, const BasisArg& v, int vstep, const SourceLoc& loc) override;
+
+  void object_begin(const std::string& handle, const SourceLoc& loc) override;
+  void object_end(const SourceLoc& loc) override;
+  void object_instance(const std::string& handle, const SourceLoc& loc) override;
+
+  void curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
+              const ParamList& params, const SourceLoc& loc) override;
+  void sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
+              const SourceLoc& loc) override;
+  void polygon(const ParamList& params, const SourceLoc& loc) override;
+  void general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params,
+                       const SourceLoc& loc) override;
+  void points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,
+                       const ParamList& params, const SourceLoc& loc) override;
+  void points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
+                               const std::vector<int>& indices, const ParamList& params,
+                               const SourceLoc& loc) override;
+
+ private:
+  enum class Block { Frame, World, Attribute, Transform, Object };
+
+  void push_block(Block b, const SourceLoc& loc);
+  void pop_block(Block b, const char* request, const SourceLoc& loc);
+  void set_ctm(const Matrix4& m);
+  void concat(const Matrix4& m);
+  bool in_world() const { return in_world_; }
+  // False while skipping an unselected frame or recording an object: geometry is not built.
+  bool building_geometry(const char* request, const SourceLoc& loc);
+  // Options may only change outside the world block.
+  bool option_allowed(const char* request, const SourceLoc& loc);
+  uint32_t make_material(const SourceLoc& loc);
+  bool object_space_left_handed() const;
+  Vec3f to_world(const float* p) const;
+  void start_scene();
+  void add_light(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc& loc);
+  // When recording an ObjectBegin block, stores the call and returns true.
+  bool record(std::function<void(SceneBuilder&)> call);
+
+  Diagnostics& diag_;
+  Callbacks callbacks_;
+  FrameOverrides overrides_;
+
+  Options options_;
+  std::vector<Options> saved_options_;  // FrameBegin pushes, FrameEnd pops
+  Attributes attributes_;
+  std::vector<Attributes> saved_attributes_;
+  Matrix4 ctm_;  // before WorldBegin: current -> camera; inside: current -> world
+  std::vector<Matrix4> saved_ctm_;
+  std::vector<Block> blocks_;
+  std::vector<SourceLoc> block_locs_;
+
+  bool in_world_ = false;
+  bool in_frame_ = false;
+  bool frame_skipped_ = false;  // --frames did not select this frame
+  int frame_number_ = 0;
+  bool has_frame_number_ = false;
+  int world_blocks_seen_ = 0;
+  int errors_at_frame_start_ = 0;
+  int frames_ready_ = 0, frames_failed_ = 0;
+
+  std::unique_ptr<Scene> scene_;  // the frame being built (inside the world block)
+  Matrix4 camera_to_world_;
+  std::map<std::string, Matrix4> named_spaces_;  // CoordinateSystem, relative to world
+  std::map<std::string, uint32_t> light_handles_;
+  uint32_t next_strand_id_ = 0;
+
+  // ObjectBegin/End: the calls of each object, replayed at ObjectInstance.
+  std::map<std::string, std::vector<std::function<void(SceneBuilder&)>>> objects_;
+  std::vector<std::function<void(SceneBuilder&)>>* recording_ = nullptr;
+  bool replaying_ = false;
+};
+
+}  // namespace darc

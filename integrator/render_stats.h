@@ -1,0 +1,41 @@
+// Counters and timings of one frame, reported by --stats.
+#pragma once
+
+#include <cstdint>
+
+namespace darc {
+
+// Per-thread counters, summed at the end of a frame.
+struct RayCounters {
+  uint64_t primary_rays = 0;
+  uint64_t secondary_rays = 0;
+  uint64_t segment_tests = 0;   // ray-curve segment intersection tests
+  uint64_t surface_tests = 0;   // ray-sphere and ray-polygon tests
+  uint64_t cells_visited = 0;   // grid cells visited
+  uint64_t rays_terminated_early = 0;  // stopped because the remaining transmittance was negligible
+  uint64_t fragments = 0;       // A-buffer fragments (distance hider)
+  uint64_t peak_fragments = 0;  // longest A-buffer seen
+  uint64_t pruned_rays = 0;     // secondary rays not traced because of a negligible contribution weight
+
+  RayCounters& operator+=(const RayCounters& o) {
+    primary_rays += o.primary_rays;
+    secondary_rays += o.secondary_rays;
+    segment_tests += o.segment_tests;
+    surface_tests += o.surface_tests;
+    cells_visited += o.cells_visited;
+    rays_terminated_early += o.rays_terminated_early;
+    fragments += o.fragments;
+    peak_fragments = peak_fragments > o.peak_fragments ? peak_fragments : o.peak_fragments;
+    pruned_rays += o.pruned_rays;
+    return *this;
+  }
+};
+
+struct FrameStats {
+  double parse_seconds = 0;  // time spent reading RIB up to this frame's WorldEnd
+  double build_seconds = 0;  // acceleration structure
+  double render_seconds = 0;
+  RayCounters counters;
+};
+
+}  // namespace darc

@@ -1,0 +1,130 @@
+#include "shading/lights.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace darc {
+
+namespace {
+
+Vec3f param_color(const ParamList& p, const char* name, Vec3f fallback) {
+  const Param* x = p.find(name);
+  if (!x || x->floats.size() < 3) return fallback;
+  return {x->floats[0], x->floats[1], x->floats[2]};
+}
+
+Vec3d param_point(const ParamList& p, const char* name, Vec3d fallback) {
+  const Param* x = p.find(name);
+  if (!x || x->floats.size() < 3) return fallback;
+  return {x->floats[0], x->floats[1], x->floats[2]};
+}
+
+class AmbientLight : public Light {
+ public:
+  explicit AmbientLight(Vec3f c) : c_(c) {}
+  bool illuminate(const Vec3f&, LightContribution& out) const override {
+    out = {c_, {}, true, 0};
+    return true;
+  }
+
+ private:
+  Vec3f c_;
+};
+
+class DistantLight : public Light {
+ public:
+  DistantLight(Vec3f c, Vec3f dir) : c_(c), to_light_(-normalize(dir)) {}
+  bool illuminate(const Vec3f&, LightContribution& out) const override {
+    out = {c_, to_light_, false, std::numeric_limits<float>::infinity()};
+    return length_squared(to_light_) > 0;
+  }
+
+ private:
+  Vec3f c_, to_light_;
+};
+
+class PointLight : public Light {
+ public:
+  PointLight(Vec3f c, Vec3f from) : c_(c), from_(from) {}
+  bool illuminate(const Vec3f& P, LightContribution& out) const override {
+    Vec3f d = from_ - P;
+    float d2 = length_squared(d);
+    if (!(d2 > 0)) return false;
+    float dist = std::sqrt(d2);
+    out = {c_ / d2, d / dist, false, dist};  // inverse-square falloff, as pointlight.sl
+    return true;
+  }
+
+ private:
+  Vec3f c_, from_;
+};
+
+class SpotLight : public Light {
+ public:
+  SpotLight(Vec3f c, Vec3f from, Vec3f axis, float cone, float delta, float beam)
+      : c_(c), from_(from), axis_(normalize(axis)), cos_outside_(std::cos(cone)),
+        cos_inside_(std::cos(cone - delta)), beam_(beam) {}
+  bool illuminate(const Vec3f& P, LightContribution& out) const override {
+    Vec3f d = from_ - P;
+    float d2 = length_squared(d);
+    if (!(d2 > 0)) return false;
+    float dist = std::sqrt(d2);
+    Vec3f L = d / dist;
+    float cosangle = dot(-L, axis_);
+    if (cosangle <= cos_outside_) return false;
+    float atten = std::pow(std::max(cosangle, 0.0f), beam_) / d2;
+    atten *= smoothstep(cos_outside_, cos_inside_, cosangle);
+    out = {c_ * atten, L, false, dist};
+    return atten > 0;
+  }
+
+ private:
+  static float smoothstep(float a, float b, float x) {
+    if (a >= b) return x >= b ? 1.0f : 0.0f;
+    float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
+    return t * t * (3 - 2 * t);
+  }
+  Vec3f c_, from_, axis_;
+  float cos_outside_, cos_inside_, beam_;
+};
+
+}  // namespace
+
+std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& descs, Diagnostics& diag) {
+  std::vector<std::unique_ptr<Light>> lights;
+  for (const LightDesc& d : descs) {
+    const ParamList& p = d.params;
+    float intensity = p.get_float("intensity", 1.0f);
+    Vec3f c = param_color(p, "lightcolor", {1, 1, 1}) * intensity;
+    Vec3d from = param_point(p, "from", {0, 0, 0});
+    Vec3d to = param_point(p, "to", {0, 0, 1});
+    Vec3f from_w = Vec3f(d.shader_to_world.transform_point(from));
+    Vec3f to_w = Vec3f(d.shader_to_world.transform_point(to));
+    std::string kind = d.shader;
+    if (kind != "ambientlight" && kind != "distantlight" && kind != "pointlight" && kind != "spotlight") {
+      std::string fallback = (p.find("to") && p.find("coneangle")) ? "spotlight"
+                             : p.find("from")                     ? "pointlight"
+                                                                  : "distantlight";
+      diag.warning_once("light:" + kind, d.loc, "LightSource",
+                        "unknown light shader \"" + kind + "\": using " + fallback);
+      kind = fallback;
+    }
+    if (kind == "ambientlight") {
+      lights.push_back(std::make_unique<AmbientLight>(c));
+    } else if (kind == "distantlight") {
+      lights.push_back(std::make_unique<DistantLight>(c, to_w - from_w));
+    } else if (kind == "pointlight") {
+      lights.push_back(std::make_unique<PointLight>(c, from_w));
+    } else {
+      float cone = p.get_float("coneangle", float(30 * std::numbers::pi / 180));
+      float delta = p.get_float("conedeltaangle", float(5 * std::numbers::pi / 180));
+      float beam = p.get_float("beamdistribution", 2.0f);
+      lights.push_back(std::make_unique<SpotLight>(c, from_w, to_w - from_w, cone, delta, beam));
+    }
+  }
+  return lights;
+}
+
+}  // namespace darc

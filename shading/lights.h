@@ -1,0 +1,33 @@
+// The standard RI light shaders (RI Spec 3.2 Appendix A), evaluated in world space.
+#pragma once
+
+#include "core/scene.h"
+#include "core/vec.h"
+#include "parser/diagnostics.h"
+
+#include <memory>
+#include <vector>
+
+namespace darc {
+
+// Light arriving at a point from one light: L points from the surface towards the light.
+struct LightContribution {
+  Vec3f Cl;
+  Vec3f L;
+  bool ambient = false;  // ambient lights have no direction: only ambient() sees them
+  float distance = 0;    // to the light position (infinity for distant lights)
+};
+
+class Light {
+ public:
+  virtual ~Light() = default;
+  // Returns false when the light sends nothing to P.
+  virtual bool illuminate(const Vec3f& P, LightContribution& out) const = 0;
+};
+
+// Builds the lights of a scene, in Scene::lights order. Unknown light shaders get one
+// warning each and fall back: to a spotlight when they have "to" and "coneangle", to a point
+// light when they have "from", else to a distant light along +z (documented in README).
+std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& descs, Diagnostics& diag);
+
+}  // namespace darc

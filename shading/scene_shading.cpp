@@ -1,0 +1,20 @@
+#include "shading/scene_shading.h"
+
+namespace darc {
+
+SceneShading::SceneShading(const Scene& scene, Diagnostics& diag) : lights_(make_lights(scene.lights, diag)) {
+  surfaces_.reserve(scene.materials.size());
+  light_lists_.reserve(scene.materials.size());
+  for (const Material& m : scene.materials) {
+    if (!m.emissive_area_light.empty())
+      surfaces_.push_back(make_area_light_surface(m.area_light_params));
+    else
+      surfaces_.push_back(make_surface_shader(m.surface, m.surface_params, m.surface_loc, diag));
+    LightList list;
+    for (uint32_t i : m.lights)
+      if (i < lights_.size()) list.push_back(lights_[i].get());
+    light_lists_.push_back(std::move(list));
+  }
+}
+
+}  // namespace darc

@@ -1,0 +1,28 @@
+// The shaders and lights of one scene, made once per frame from the scene's RIB names and
+// parameters, and looked up by material index while rendering (read-only, thread-safe).
+#pragma once
+
+#include "core/scene.h"
+#include "parser/diagnostics.h"
+#include "shading/lights.h"
+#include "shading/surface_shader.h"
+
+#include <memory>
+#include <vector>
+
+namespace darc {
+
+class SceneShading {
+ public:
+  SceneShading(const Scene& scene, Diagnostics& diag);
+
+  const SurfaceShader& surface(uint32_t material) const { return *surfaces_[material]; }
+  const LightList& lights(uint32_t material) const { return light_lists_[material]; }
+
+ private:
+  std::vector<std::unique_ptr<Light>> lights_;
+  std::vector<std::unique_ptr<SurfaceShader>> surfaces_;
+  std::vector<LightList> light_lists_;
+};
+
+}  // namespace darc

@@ -1,0 +1,184 @@
+// Conformance: every RIB file in ../shared/ribs/aqsis renders with exit code 0, and each image
+// shows what the file is about. Skipped (with a message) when ../shared is absent.
+#include "render_test_util.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace darc::test {
+namespace {
+
+#define REQUIRE_SHARED_RIBS() \
+  if (!have_shared_ribs()) GTEST_SKIP() << "shared RIBs not found at " << shared_ribs() << ": conformance skipped"
+
+// Renders a shared RIB in a scratch directory (outputs land there, named by Display).
+RunResult render_shared(const ScratchDir& dir, const std::string& file, const std::string& extra = "") {
+  return run_darc(dir.path(), extra + " '" + (shared_ribs() / file).string() + "'");
+}
+
+int count_pixels(const Pixels& p, auto&& pred) {
+  int n = 0;
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x)
+      if (pred(p.at(x, y, 0), p.at(x, y, 1), p.at(x, y, 2))) ++n;
+  return n;
+}
+
+// Number of separate runs of "on" pixels along one image row.
+int runs_along_row(const Pixels& p, int y, auto&& pred) {
+  int runs = 0;
+  bool prev = false;
+  for (int x = 0; x < p.width; ++x) {
+    bool on = pred(p.at(x, y, 0), p.at(x, y, 1), p.at(x, y, 2));
+    if (on && !prev) ++runs;
+    prev = on;
+  }
+  return runs;
+}
+
+TEST(SharedRibs, BezierGrassShowsManyTaperingBlades) {
+  REQUIRE_SHARED_RIBS();
+  ScratchDir dir("bezier");
+  RunResult r = render_shared(dir, "Curves_bezier.rib");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Pixels img;
+  ASSERT_TRUE(read_image(dir / "bezier.tif", img));
+  EXPECT_EQ(img.width, 320);
+  EXPECT_EQ(img.height, 240);
+  auto green = [](float r, float g, float b) { return g > 0.1f && g > 1.5f * r && g > 1.5f * b; };
+  int n = count_pixels(img, green);
+  EXPECT_GT(n, 2000) << "grass should cover a good part of the frame";
+  EXPECT_LT(n, 320 * 240 * 3 / 4);
+  // Blades taper to zero width at the tip: near the bottom of the frame (roots, wide) a row
+  // crosses many separate blades.
+  int max_runs = 0;
+  for (int y = 0; y < img.height; ++y) max_runs = std::max(max_runs, runs_along_row(img, y, green));
+  EXPECT_GE(max_runs, 8) << "expected many separate blades across a row";
+}
+
+TEST(SharedRibs, CatmullRomCurveAndReferenceSquare) {
+  REQUIRE_SHARED_RIBS();
+  ScratchDir dir("catmull");
+  RunResult r = render_shared(dir, "Curves_catmull-rom.rib");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Pixels img;
+  ASSERT_TRUE(read_image(dir / "catmull-rom.tif", img));
+  // Surface "constant" with Color 0.8 0.8 1.0: the curve pixels are exactly that colour (8-bit
+  // sRGB of 0.8 is 231/255 = 0.906).
+  auto lilac = [](float r, float g, float b) { return b > 0.95f && r > 0.85f && r < 0.95f && g > 0.85f && g < 0.95f; };
+  int n = count_pixels(img, lilac);
+  EXPECT_GT(n, 200);
+  EXPECT_LT(n, 320 * 240 / 4);
+}
+
+TEST(SharedRibs, LinearCurveSeenEndOnAndSquare) {
+  REQUIRE_SHARED_RIBS();
+  ScratchDir dir("linear");
+  RunResult r = render_shared(dir, "Curves_linear.rib");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Pixels img;
+  ASSERT_TRUE(read_image(dir / "linear.tif", img));
+  auto lit = [](float r, float g, float b) { return r + g + b > 0.5f; };
+  EXPECT_GT(count_pixels(img, lit), 100);
+}
+
+TEST(SharedRibs, LinCurveTest1FallsBackFromUnknownShader) {
+  REQUIRE_SHARED_RIBS();
+  ScratchDir dir("lincurve1");
+  RunResult r = render_shared(dir, "Curves_lincurve_test1.rib");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("show_st"), std::string::npos) << "expected a warning naming the unknown shader";
+  Pixels img;
+  ASSERT_TRUE(read_image(dir / "lincurve_test1.tif", img));
+  auto lit = [](float r, float g, float b) { return r + g + b > 0.3f; };
+  EXPECT_GT(count_pixels(img, lit), 2000);
+}
+
+TEST(SharedRibs, LinCurveTest2OneSidedCurveShowsLessThanTwoSided) {
+  REQUIRE_SHARED_RIBS();
+  ScratchDir dir("lincurve2");
+  RunResult r = render_shared(dir, "Curves_lincurve_test2.rib");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Pixels img;
+  ASSERT_TRUE(read_image(dir / "lincurve_test2.tif", img));
+  auto blue = [](float r, float g, float b) { return b > 0.05f && r < 0.5f * b && g < 0.5f * b; };
+  auto purple = [](float r, float g, float b) { return r > 0.05f && b > 0.05f && g < 0.5f * std::min(r, b); };
+  auto red = [](float r, float g, float b) { return r > 0.05f && g < 0.3f * r && b < 0.3f * r; };
+  auto green = [](float r, float g, float b) { return g > 0.05f && r < 0.3f * g && b < 0.3f * g; };
+  int nb = count_pixels(img, blue), np = count_pixels(img, purple);
+  EXPECT_GT(nb, 200);
+  EXPECT_GT(np, 50) << "the one-sided curve shows its front faces";
+  EXPECT_LT(np, nb) << "Sides 1 hides the back-facing half of the purple curve";
+  EXPECT_GT(count_pixels(img, red), 100);
+  EXPECT_GT(count_pixels(img, green), 500);
+}
+
+TEST(SharedRibs, AnimWritesFiftyFramesWithAMovingSphere) {
+  REQUIRE_SHARED_RIBS();
+  ScratchDir dir("anim");
+  RunResult r = render_shared(dir, "Misc_anim.rib", "--res 80x60");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  double cx_first = 0, cx_prev = -1;
+  int moved = 0;
+  for (int f = 0; f < 50; ++f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "anim%02d.tif", f);
+    Pixels img;
+    ASSERT_TRUE(read_image(dir / name, img)) << name;
+    ASSERT_EQ(img.channels, 4) << "rgba display";
+    double sx = 0, sw = 0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        float a = img.at(x, y, 3);
+        sx += a * x;
+        sw += a;
+      }
+    ASSERT_GT(sw, 10) << "the sphere is visible in " << name;
+    double cx = sx / sw;
+    if (f == 0) cx_first = cx;
+    if (cx_prev >= 0 && std::abs(cx - cx_prev) > 0.05) ++moved;
+    cx_prev = cx;
+  }
+  EXPECT_GT(moved, 25) << "the sphere moves between most frames";
+  (void)cx_first;
+}
+
+TEST(SharedRibs, GeneralPolygonsHaveHoles) {
+  REQUIRE_SHARED_RIBS();
+  ScratchDir dir("genpoly");
+  RunResult r = render_shared(dir, "Polygons_genpoly_test.rib");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Pixels img;
+  ASSERT_TRUE(read_image(dir / "genpoly_test.tif", img));
+  auto red = [](float r, float g, float b) { return r > 0.2f && g < 0.4f * r && b < 0.4f * r; };
+  auto yellow = [](float r, float g, float b) { return r > 0.2f && g > 0.6f * r && b < 0.4f * r; };
+  EXPECT_GT(count_pixels(img, red), 500);
+  EXPECT_GT(count_pixels(img, yellow), 100) << "the yellow polygon shows through the red polygon's hole";
+  // Background shows through the holes: some pixels inside the red polygons' bounding box are
+  // black (alpha 0).
+  int transparent = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      if (img.at(x, y, 3) < 0.01f) ++transparent;
+  EXPECT_GT(transparent, 1000);
+}
+
+TEST(SharedRibs, ReadArchiveBringsTheRedTriangle) {
+  REQUIRE_SHARED_RIBS();
+  ScratchDir dir("readarchive");
+  RunResult r = render_shared(dir, "RIBProcessing_readarchive.rib");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Pixels img;
+  ASSERT_TRUE(read_image(dir / "readarchive.tif", img));
+  auto red = [](float r, float g, float b) { return r > 0.9f && g < 0.1f && b < 0.1f; };
+  auto yellow = [](float r, float g, float b) { return r > 0.9f && g > 0.9f && b < 0.1f; };
+  auto white = [](float r, float g, float b) { return r > 0.9f && g > 0.9f && b > 0.9f; };
+  EXPECT_GT(count_pixels(img, red), 100) << "the archive's triangle";
+  EXPECT_GT(count_pixels(img, yellow), 100);
+  EXPECT_GT(count_pixels(img, white), 100);
+  // The yellow square is in front, at the centre.
+  EXPECT_TRUE(yellow(img.at(100, 75, 0), img.at(100, 75, 1), img.at(100, 75, 2)));
+}
+
+}  // namespace
+}  // namespace darc::test
