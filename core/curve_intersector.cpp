@@ -64,8 +64,9 @@ struct TraversalState {
 // Half of the largest width coefficient: the Bézier width (and the oriented width, scaled by a
 // cosine <= 1) never exceeds it, so it bounds the ribbon around its axis. The distance-aware
 // variant will add the ray footprint radius here.
+// Zero when the whole (sub)curve is hidden.
 float cull_margin(const float width[4]) {
-  return 0.5f * std::max(std::max(width[0], width[1]), std::max(width[2], width[3]));
+  return std::max(0.0f, 0.5f * std::max(std::max(width[0], width[1]), std::max(width[2], width[3])));
 }
 
 // Does the control-point bound grown by `margin` touch the ray (the z axis) within [z_lo, z_hi]?
@@ -152,7 +153,8 @@ void intersect_recursive(const Vec3f cp[4], const float width[4], float u0, floa
     const float* sub_width = width_split + 3 * half;
     // t_best shrinks after a hit in the first half, so the second is culled against it.
     float z_lo = s.t_min * s.ray_length, z_hi = s.t_best * s.ray_length;
-    if (!bound_overlaps_ray(sub_cp, cull_margin(sub_width), z_lo, z_hi)) continue;
+    float margin = cull_margin(sub_width);
+    if (!(margin > 0.0f) || !bound_overlaps_ray(sub_cp, margin, z_lo, z_hi)) continue;
     intersect_recursive(sub_cp, sub_width, half == 0 ? u0 : u_mid, half == 0 ? u_mid : u1, depth - 1, s);
   }
 }

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "core/curve_basis.h"
 
@@ -144,6 +145,23 @@ TEST(CurveIntersect, EndOnHitsTheNearEnd) {
   EXPECT_TRUE(finite(hit));
 }
 
+// A bent strand whose chord is parallel to the ray: the ray-space frame has no "up" from the
+// chord. x(u) = 3u(1-u), z(u) = 3u; the ray at x = 0.5 meets it first at u = (1 - sqrt(1/3)) / 2.
+TEST(CurveIntersect, ChordParallelToTheRay) {
+  CurveSet set = single_segment({Vec3f{0, 0, 0}, {1, 0, 1}, {1, 0, 2}, {0, 0, 3}}, constant_width(0.1f));
+  CurveHit hit;
+  ASSERT_TRUE(intersect_segment(set, 0, ray_z(0.5f, 0.0f, -1.0f), hit));
+  double u = (1 - std::sqrt(1.0 / 3.0)) / 2;
+  // Leaves are flat to width / 20 = 0.005, and the curve moves ~3.5 per unit of u here.
+  const double u_tolerance = 0.005 / 3.5 * 2;
+  EXPECT_NEAR(hit.u, u, u_tolerance);
+  EXPECT_NEAR(hit.t, 3 * u + 1, 1e-2);  // the ribbon is crossed at a slant: t within a width
+  // From the other end, the other crossing (u' = 1 - u) is the nearer one.
+  ASSERT_TRUE(intersect_segment(set, 0, Ray{{0.5f, 0, 4}, {0, 0, -1}}, hit));
+  EXPECT_NEAR(hit.u, 1 - u, u_tolerance);
+  EXPECT_FALSE(intersect_segment(set, 0, ray_z(0.81f, 0.0f, -1.0f), hit));
+}
+
 // Far from the world origin float positions keep ~0.008 absolute precision; the offsets below
 // are exact multiples of 1/128 so the expected answers are exact.
 TEST(CurveIntersect, CoordinatesNear1e5) {
@@ -172,6 +190,34 @@ TEST(CurveIntersect, ZeroLengthSegmentNeverGivesNaN) {
   EXPECT_FALSE(intersect_segment(set, 0, Ray{{1, 2, 0}, {0, 0, 0}}, hit));
   float nan = std::numeric_limits<float>::quiet_NaN();
   EXPECT_FALSE(intersect_segment(set, 0, Ray{{1, 2, 0}, {nan, 0, 1}}, hit));
+}
+
+// Random segments (some with coincident points, negative widths, huge offsets) and rays: every
+// reported hit is finite, inside the ray interval and on the segment.
+TEST(CurveIntersect, RandomInputsNeverGiveNaN) {
+  std::mt19937 rng(3);  // fixed seed: deterministic
+  std::uniform_real_distribution<float> coord(-2.0f, 2.0f), width(-0.2f, 1.0f);
+  int hits = 0;
+  for (int i = 0; i < 2000; ++i) {
+    float offset = (i % 4 == 0) ? 1e5f : 0.0f;
+    std::array<Vec3f, 4> cp;
+    for (auto& p : cp) p = Vec3f{coord(rng), coord(rng), coord(rng)} + Vec3f{offset, offset, offset};
+    if (i % 7 == 0) cp[1] = cp[2] = cp[3] = cp[0];
+    if (i % 5 == 0) cp[2] = cp[1];
+    CurveSet set = single_segment(cp, {width(rng), width(rng), width(rng), width(rng)});
+    Vec3f target = bezier_evaluate(cp.data(), std::uniform_real_distribution<float>(0, 1)(rng));
+    Vec3f origin = target + Vec3f{coord(rng), coord(rng), coord(rng)} * 3.0f;
+    CurveHit hit;
+    if (!intersect_segment(set, 0, Ray{origin, target - origin}, hit)) continue;
+    ++hits;
+    ASSERT_TRUE(finite(hit)) << i;
+    EXPECT_GE(hit.u, 0.0f);
+    EXPECT_LE(hit.u, 1.0f);
+    EXPECT_GE(hit.t, 0.0f);
+    EXPECT_NEAR(length(hit.normal), 1.0f, 1e-4f);
+    EXPECT_NEAR(length(hit.tangent), 1.0f, 1e-4f);
+  }
+  EXPECT_GT(hits, 500);
 }
 
 double bezier(const double c[4], double u) {
