@@ -161,7 +161,7 @@ void RequestReader::read_values(Param& param) {
   lexer_.next();
 }
 
-ParamDecl RequestReader::resolve_declaration(const std::string& request, const Param& param) {
+ParamDecl RequestReader::resolve_declaration(const std::string& request, const Param& param, bool warn_undeclared) {
   if (auto it = declared_.find(param.name); it != declared_.end()) return it->second;
   if (auto standard = standard_declaration(param.name)) return *standard;
   // Undeclared: type it from its values so that vendor options still pass through.
@@ -171,7 +171,7 @@ ParamDecl RequestReader::resolve_declaration(const std::string& request, const P
   } else {
     inferred.array_size = std::max<int>(1, static_cast<int>(param.floats.size()));
   }
-  if (!infers_silently(request)) {
+  if (warn_undeclared) {
     diag_.warning_once("undeclared parameter " + param.name, param.loc, request,
                        fmt::format("parameter \"{}\" is not declared: assuming \"{}\"", param.name, to_string(inferred)));
   }
@@ -206,6 +206,10 @@ void RequestReader::check_values(const Param& param) const {
 }
 
 ParamList RequestReader::param_list(const std::string& request) {
+  return read_param_list(request, !infers_silently(request));
+}
+
+ParamList RequestReader::read_param_list(const std::string& request, bool warn_undeclared) {
   ParamList list;
   while (!at_request_end()) {
     const Token token = take_checked(TokenKind::String, "a parameter name (a string)");
@@ -213,7 +217,7 @@ ParamList RequestReader::param_list(const std::string& request) {
     param.loc = lexer_.loc(token);
     std::optional<ParamDecl> inline_decl = parse_inline_decl(token.text, param.name);
     read_values(param);
-    param.decl = inline_decl ? *inline_decl : resolve_declaration(request, param);
+    param.decl = inline_decl ? *inline_decl : resolve_declaration(request, param, warn_undeclared);
     check_values(param);
     list.params.push_back(std::move(param));
   }

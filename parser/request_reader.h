@@ -54,8 +54,9 @@ class RequestReader {
   ParamList param_list(const std::string& request);
   // Every remaining argument up to the next request, flattened (for ignored requests).
   void flatten_rest(std::vector<double>& numbers, std::vector<std::string>& strings);
-  // Discards a parameter list after checking its syntax.
-  void skip_param_list(const std::string& request) { (void)param_list(request); }
+  // Discards a parameter list after checking its syntax (undeclared names do not warn: their
+  // values are not used).
+  void skip_param_list(const std::string& request) { (void)read_param_list(request, false); }
   // True when the next token starts a request or ends the input.
   bool at_request_end();
   // Throws when anything but the next request or the end follows.
@@ -66,7 +67,8 @@ class RequestReader {
   void read_fixed_numbers(double* out, size_t count, const char* what);
   // Reads one value (bare number or string, or a bracketed array) of a parameter.
   void read_values(Param& param);
-  ParamDecl resolve_declaration(const std::string& request, const Param& param);
+  ParamList read_param_list(const std::string& request, bool warn_undeclared);
+  ParamDecl resolve_declaration(const std::string& request, const Param& param, bool warn_undeclared);
   void check_values(const Param& param) const;
   Token take_checked(TokenKind kind, const std::string& what);
   int to_integer(const Token& token, const std::string& what) const;

@@ -2,7 +2,11 @@
 // strings, so tests can look at what the parser delivered and compare two parses.
 #pragma once
 
+#include "parser/diagnostics.h"
+#include "parser/rib_parser.h"
 #include "parser/ri_target.h"
+
+#include <memory>
 
 #include <string>
 #include <vector>
@@ -176,5 +180,31 @@ class RecordingTarget : public RiTarget {
     calls.push_back({request, std::move(numbers), std::move(strings), params, loc});
   }
 };
+
+// The outcome of parsing a text with a RecordingTarget and silent Diagnostics.
+struct ParseResult {
+  RecordingTarget target;
+  Diagnostics diag{[](const Diagnostic&) {}};
+  bool ok = false;
+
+  std::vector<Diagnostic> errors() const { return of(Severity::Error); }
+  std::vector<Diagnostic> warnings() const { return of(Severity::Warning); }
+
+ private:
+  std::vector<Diagnostic> of(Severity s) const {
+    std::vector<Diagnostic> out;
+    for (const Diagnostic& d : diag.all()) {
+      if (d.severity == s) out.push_back(d);
+    }
+    return out;
+  }
+};
+
+inline std::unique_ptr<ParseResult> parse_rib(const std::string& text, const std::string& name = "test.rib") {
+  auto result = std::make_unique<ParseResult>();
+  RibParser parser(result->target, result->diag);
+  result->ok = parser.parse_string(text, name);
+  return result;
+}
 
 }  // namespace darc::test
