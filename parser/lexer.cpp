@@ -1,0 +1,263 @@
+#include "parser/lexer.h"
+
+#include <fmt/format.h>
+#include <zlib.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+
+namespace darc {
+
+namespace {
+
+// The largest magnitude a RIB number may have: every value ends up in a float somewhere.
+constexpr double kMaxNumberMagnitude = std::numeric_limits<float>::max();
+// zlib reads in chunks of this many bytes (a compromise between calls and memory).
+constexpr unsigned kGzipChunkBytes = 1u << 16;
+// Longest piece of a malformed token quoted in an error message.
+constexpr size_t kMaxQuotedChars = 40;
+
+bool is_space(unsigned char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
+bool is_binary(unsigned char c) { return c >= 0x80; }
+bool is_control(unsigned char c) { return (c < 0x20 && !is_space(c)) || c == 0x7f; }
+bool is_delimiter(unsigned char c) { return is_space(c) || c == '"' || c == '[' || c == ']' || c == '#'; }
+bool starts_number(unsigned char c) { return (c >= '0' && c <= '9') || c == '.' || c == '+' || c == '-'; }
+
+std::string quoted_excerpt(std::string_view s) {
+  if (s.size() > kMaxQuotedChars) return std::string(s.substr(0, kMaxQuotedChars)) + "...";
+  return std::string(s);
+}
+
+}  // namespace
+
+std::string describe(const Token& token) {
+  switch (token.kind) {
+    case TokenKind::Word:
+      return fmt::format("request name {}", quoted_excerpt(token.text));
+    case TokenKind::String:
+      return fmt::format("string \"{}\"", quoted_excerpt(token.text));
+    case TokenKind::Number: {
+      char buf[64];
+      auto r = std::to_chars(buf, buf + sizeof buf, token.number);
+      return fmt::format("number {}", std::string_view(buf, static_cast<size_t>(r.ptr - buf)));
+    }
+    case TokenKind::ArrayBegin:
+      return "'['";
+    case TokenKind::ArrayEnd:
+      return "']'";
+    case TokenKind::End:
+      return "end of file";
+    case TokenKind::Error:
+      return fmt::format("invalid token ({})", token.text);
+  }
+  return "token";
+}
+
+Lexer::Lexer(std::string text, std::shared_ptr<const std::string> file)
+    : text_(std::move(text)), file_(std::move(file)) {}
+
+const Token& Lexer::peek() {
+  if (!has_peeked_) {
+    peeked_ = scan();
+    has_peeked_ = true;
+  }
+  return peeked_;
+}
+
+Token Lexer::next() {
+  if (has_peeked_) {
+    has_peeked_ = false;
+    return std::move(peeked_);
+  }
+  return scan();
+}
+
+void Lexer::advance_line_break() {
+  if (text_[pos_] == '\r' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '\n') ++pos_;
+  ++pos_;
+  ++line_;
+  line_start_ = pos_;
+}
+
+void Lexer::skip_whitespace_and_comments() {
+  while (pos_ < text_.size()) {
+    const unsigned char c = text_[pos_];
+    if (c == '\n' || c == '\r') {
+      advance_line_break();
+    } else if (is_space(c)) {
+      ++pos_;
+    } else if (c == '#') {
+      // A comment (and a "##" structure comment) runs to the end of the line; its bytes are
+      // free text, so the binary check does not apply to them.
+      while (pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r') ++pos_;
+    } else {
+      return;
+    }
+  }
+}
+
+Token Lexer::error(Token token, std::string message, bool stop) {
+  token.kind = TokenKind::Error;
+  token.text = std::move(message);
+  if (stop) stopped_ = true;
+  return token;
+}
+
+Token Lexer::scan() {
+  Token token;
+  if (stopped_) return token;
+  skip_whitespace_and_comments();
+  token.line = line_;
+  token.column = static_cast<int>(pos_ - line_start_) + 1;
+  if (pos_ >= text_.size()) return token;
+
+  const unsigned char c = text_[pos_];
+  if (is_binary(c)) return error(std::move(token), "binary RIB is not supported", true);
+  if (is_control(c)) {
+    ++pos_;
+    return error(std::move(token), fmt::format("unexpected control character 0x{:02x}", c), false);
+  }
+  switch (c) {
+    case '[':
+      ++pos_;
+      token.kind = TokenKind::ArrayBegin;
+      return token;
+    case ']':
+      ++pos_;
+      token.kind = TokenKind::ArrayEnd;
+      return token;
+    case '"':
+      return scan_string(std::move(token));
+    default:
+      break;
+  }
+  if (starts_number(c)) return scan_number(std::move(token));
+  return scan_word(std::move(token));
+}
+
+Token Lexer::scan_string(Token token) {
+  ++pos_;  // opening quote
+  token.kind = TokenKind::String;
+  while (pos_ < text_.size()) {
+    const char c = text_[pos_];
+    if (c == '"') {
+      ++pos_;
+      return token;
+    }
+    if (c == '\n' || c == '\r') {
+      token.text += c;
+      if (c == '\r' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '\n') token.text += '\n';
+      advance_line_break();
+      continue;
+    }
+    if (c == '\\' && pos_ + 1 < text_.size()) {
+      const char e = text_[pos_ + 1];
+      char resolved = 0;
+      switch (e) {
+        case '"': resolved = '"'; break;
+        case '\\': resolved = '\\'; break;
+        case 'n': resolved = '\n'; break;
+        case 't': resolved = '\t'; break;
+        case 'r': resolved = '\r'; break;
+        default: break;
+      }
+      if (resolved != 0) {
+        token.text += resolved;
+        pos_ += 2;
+        continue;
+      }
+      // Unknown escapes stay verbatim: Windows paths such as "C:\temp\x.rib" are common.
+    }
+    token.text += c;
+    ++pos_;
+  }
+  token.text.clear();
+  return error(std::move(token), "unterminated string", true);
+}
+
+Token Lexer::scan_number(Token token) {
+  const size_t begin = pos_;
+  while (pos_ < text_.size() && !is_delimiter(text_[pos_]) && !is_binary(text_[pos_]) && !is_control(text_[pos_])) {
+    ++pos_;
+  }
+  std::string_view spelling(text_.data() + begin, pos_ - begin);
+  // from_chars does not take a leading '+', which RIB allows ("+2").
+  std::string_view digits = spelling;
+  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+  if (!digits.empty() && digits.front() == '+') digits = {};  // "++2" is malformed
+  double value = 0;
+  auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (ec == std::errc::result_out_of_range) {
+    return error(std::move(token), fmt::format("number {} is out of range", quoted_excerpt(spelling)), false);
+  }
+  if (ec != std::errc() || ptr != digits.data() + digits.size()) {
+    return error(std::move(token), fmt::format("malformed number \"{}\"", quoted_excerpt(spelling)), false);
+  }
+  // from_chars also accepts "inf" and "nan" spellings after a sign ("-nan"); RIB has neither.
+  if (!std::isfinite(value)) {
+    return error(std::move(token), fmt::format("\"{}\" is not a finite number", quoted_excerpt(spelling)), false);
+  }
+  if (std::fabs(value) > kMaxNumberMagnitude) {
+    return error(std::move(token), fmt::format("number {} is out of range", quoted_excerpt(spelling)), false);
+  }
+  token.kind = TokenKind::Number;
+  token.number = value;
+  return token;
+}
+
+Token Lexer::scan_word(Token token) {
+  const size_t begin = pos_;
+  while (pos_ < text_.size() && !is_delimiter(text_[pos_]) && !is_binary(text_[pos_]) && !is_control(text_[pos_])) {
+    ++pos_;
+  }
+  token.kind = TokenKind::Word;
+  token.text.assign(text_, begin, pos_ - begin);
+  return token;
+}
+
+bool read_rib_text(const std::string& path, std::string& text, std::string& error) {
+  text.clear();
+  if (path == "-") {
+    text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+    return true;
+  }
+  const bool gzipped = path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
+  if (gzipped) {
+    gzFile file = gzopen(path.c_str(), "rb");
+    if (!file) {
+      error = std::strerror(errno);
+      return false;
+    }
+    std::string chunk(kGzipChunkBytes, '\0');
+    int n = 0;
+    while ((n = gzread(file, chunk.data(), kGzipChunkBytes)) > 0) text.append(chunk.data(), static_cast<size_t>(n));
+    int code = Z_OK;
+    const char* message = gzerror(file, &code);
+    const bool ok = n == 0 && (code == Z_OK || code == Z_STREAM_END);
+    if (!ok) error = std::string("gzip: ") + (message ? message : "read error");
+    gzclose(file);
+    return ok;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = std::strerror(errno);
+    return false;
+  }
+  std::ostringstream contents;
+  contents << in.rdbuf();
+  if (in.bad()) {
+    error = "read error";
+    return false;
+  }
+  text = std::move(contents).str();
+  return true;
+}
+
+}  // namespace darc

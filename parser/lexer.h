@@ -1,0 +1,64 @@
+// The RIB lexer: turns ASCII RIB text (held whole in memory) into tokens with 1-based line and
+// column positions. Lexical errors (malformed or out-of-range numbers, unterminated strings,
+// stray control characters, binary RIB) come out as Error tokens so the parser can report them
+// with their position and recover; after a binary byte or an unterminated string the lexer
+// only returns End, because nothing after that point can be read reliably.
+#pragma once
+
+#include "parser/source_loc.h"
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace darc {
+
+enum class TokenKind { Word, String, Number, ArrayBegin, ArrayEnd, End, Error };
+
+struct Token {
+  TokenKind kind = TokenKind::End;
+  std::string text;   // Word: the request name; String: contents with escapes resolved; Error: the message
+  double number = 0;  // Number only; always finite and within float range
+  int line = 0;       // 1-based
+  int column = 0;     // 1-based, in bytes
+};
+
+// "number 3.5", "string \"abc\"", "'['", "end of file", "request name Foo": for error messages.
+std::string describe(const Token& token);
+
+class Lexer {
+ public:
+  // `file` names the text in positions (shared by every SourceLoc made from this lexer).
+  Lexer(std::string text, std::shared_ptr<const std::string> file);
+
+  // The next token without consuming it.
+  const Token& peek();
+  // Consumes and returns the next token.
+  Token next();
+  SourceLoc loc(const Token& token) const { return SourceLoc{file_, token.line, token.column}; }
+  const std::shared_ptr<const std::string>& file() const { return file_; }
+
+ private:
+  Token scan();
+  void skip_whitespace_and_comments();
+  void advance_line_break();  // at '\r' or '\n': consumes one line break (CRLF counts once)
+  Token scan_string(Token token);
+  Token scan_number(Token token);
+  Token scan_word(Token token);
+  Token error(Token token, std::string message, bool stop);
+
+  std::string text_;
+  std::shared_ptr<const std::string> file_;
+  size_t pos_ = 0;
+  size_t line_start_ = 0;  // offset of the first byte of the current line
+  int line_ = 1;
+  bool stopped_ = false;  // set after an unrecoverable error: only End follows
+  bool has_peeked_ = false;
+  Token peeked_;
+};
+
+// Reads a whole RIB file into `text`: `-` is standard input, names ending in ".gz" are
+// decompressed with zlib. Returns false and sets `error` when the file cannot be read.
+bool read_rib_text(const std::string& path, std::string& text, std::string& error);
+
+}  // namespace darc
