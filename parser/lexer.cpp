@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <zlib.h>
 
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -24,10 +25,28 @@ constexpr unsigned kGzipChunkBytes = 1u << 16;
 // Longest piece of a malformed token quoted in an error message.
 constexpr size_t kMaxQuotedChars = 40;
 
-bool is_space(unsigned char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
-bool is_binary(unsigned char c) { return c >= 0x80; }
-bool is_control(unsigned char c) { return (c < 0x20 && !is_space(c)) || c == 0x7f; }
-bool is_delimiter(unsigned char c) { return is_space(c) || c == '"' || c == '[' || c == ']' || c == '#'; }
+constexpr bool is_space(unsigned char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+}
+constexpr bool is_binary(unsigned char c) { return c >= 0x80; }
+constexpr bool is_control(unsigned char c) { return (c < 0x20 && !is_space(c)) || c == 0x7f; }
+constexpr bool is_delimiter(unsigned char c) { return is_space(c) || c == '"' || c == '[' || c == ']' || c == '#'; }
+// Bytes that may continue a word or number token, as a table: the scan loops run once per input byte.
+constexpr std::array<bool, 256> make_token_byte_table() {
+  std::array<bool, 256> table{};
+  for (int c = 0; c < 256; ++c) {
+    const auto b = static_cast<unsigned char>(c);
+    table[static_cast<size_t>(c)] = !is_delimiter(b) && !is_binary(b) && !is_control(b);
+  }
+  return table;
+}
+constexpr std::array<bool, 256> kTokenByte = make_token_byte_table();
+
+size_t token_end(const std::string& text, size_t pos) {
+  while (pos < text.size() && kTokenByte[static_cast<unsigned char>(text[pos])]) ++pos;
+  return pos;
+}
+
 bool starts_number(unsigned char c) { return (c >= '0' && c <= '9') || c == '.' || c == '+' || c == '-'; }
 
 std::string quoted_excerpt(std::string_view s) {
@@ -161,12 +180,23 @@ Token Lexer::scan_string(Token token) {
       const char e = text_[pos_ + 1];
       char resolved = 0;
       switch (e) {
-        case '"': resolved = '"'; break;
-        case '\\': resolved = '\\'; break;
-        case 'n': resolved = '\n'; break;
-        case 't': resolved = '\t'; break;
-        case 'r': resolved = '\r'; break;
-        default: break;
+        case '"':
+          resolved = '"';
+          break;
+        case '\\':
+          resolved = '\\';
+          break;
+        case 'n':
+          resolved = '\n';
+          break;
+        case 't':
+          resolved = '\t';
+          break;
+        case 'r':
+          resolved = '\r';
+          break;
+        default:
+          break;
       }
       if (resolved != 0) {
         token.text += resolved;
@@ -184,9 +214,7 @@ Token Lexer::scan_string(Token token) {
 
 Token Lexer::scan_number(Token token) {
   const size_t begin = pos_;
-  while (pos_ < text_.size() && !is_delimiter(text_[pos_]) && !is_binary(text_[pos_]) && !is_control(text_[pos_])) {
-    ++pos_;
-  }
+  pos_ = token_end(text_, pos_);
   std::string_view spelling(text_.data() + begin, pos_ - begin);
   // from_chars does not take a leading '+', which RIB allows ("+2").
   std::string_view digits = spelling;
@@ -214,9 +242,7 @@ Token Lexer::scan_number(Token token) {
 
 Token Lexer::scan_word(Token token) {
   const size_t begin = pos_;
-  while (pos_ < text_.size() && !is_delimiter(text_[pos_]) && !is_binary(text_[pos_]) && !is_control(text_[pos_])) {
-    ++pos_;
-  }
+  pos_ = token_end(text_, pos_);
   token.kind = TokenKind::Word;
   token.text.assign(text_, begin, pos_ - begin);
   return token;

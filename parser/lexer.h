@@ -5,11 +5,11 @@
 // only returns End, because nothing after that point can be read reliably.
 #pragma once
 
-#include "parser/source_loc.h"
-
 #include <memory>
 #include <string>
 #include <string_view>
+
+#include "parser/source_loc.h"
 
 namespace darc {
 

@@ -1,7 +1,8 @@
 #include "parser/param_list.h"
 
-#include <boost/spirit/home/x3.hpp>
 #include <fmt/format.h>
+
+#include <boost/spirit/home/x3.hpp>
 
 namespace darc {
 
@@ -16,11 +17,11 @@ constexpr unsigned kMaxDeclArraySize = 1u << 20;
 // Keyword tables of the declaration grammar. They are built once and never modified.
 const x3::symbols<StorageClass>& storage_class_keywords() {
   static const x3::symbols<StorageClass> keywords({{"constant", StorageClass::Constant},
-                                                    {"uniform", StorageClass::Uniform},
-                                                    {"varying", StorageClass::Varying},
-                                                    {"vertex", StorageClass::Vertex},
-                                                    {"facevarying", StorageClass::FaceVarying},
-                                                    {"facevertex", StorageClass::FaceVertex}});
+                                                   {"uniform", StorageClass::Uniform},
+                                                   {"varying", StorageClass::Varying},
+                                                   {"vertex", StorageClass::Vertex},
+                                                   {"facevarying", StorageClass::FaceVarying},
+                                                   {"facevertex", StorageClass::FaceVertex}});
   return keywords;
 }
 
@@ -115,27 +116,42 @@ std::optional<ParamDecl> parse_inline_decl(const std::string& token, std::string
 
 std::string to_string(StorageClass c) {
   switch (c) {
-    case StorageClass::Constant: return "constant";
-    case StorageClass::Uniform: return "uniform";
-    case StorageClass::Varying: return "varying";
-    case StorageClass::Vertex: return "vertex";
-    case StorageClass::FaceVarying: return "facevarying";
-    case StorageClass::FaceVertex: return "facevertex";
+    case StorageClass::Constant:
+      return "constant";
+    case StorageClass::Uniform:
+      return "uniform";
+    case StorageClass::Varying:
+      return "varying";
+    case StorageClass::Vertex:
+      return "vertex";
+    case StorageClass::FaceVarying:
+      return "facevarying";
+    case StorageClass::FaceVertex:
+      return "facevertex";
   }
   return "uniform";
 }
 
 std::string to_string(ParamType t) {
   switch (t) {
-    case ParamType::Float: return "float";
-    case ParamType::Integer: return "int";
-    case ParamType::String: return "string";
-    case ParamType::Color: return "color";
-    case ParamType::Point: return "point";
-    case ParamType::Vector: return "vector";
-    case ParamType::Normal: return "normal";
-    case ParamType::HPoint: return "hpoint";
-    case ParamType::Matrix: return "matrix";
+    case ParamType::Float:
+      return "float";
+    case ParamType::Integer:
+      return "int";
+    case ParamType::String:
+      return "string";
+    case ParamType::Color:
+      return "color";
+    case ParamType::Point:
+      return "point";
+    case ParamType::Vector:
+      return "vector";
+    case ParamType::Normal:
+      return "normal";
+    case ParamType::HPoint:
+      return "hpoint";
+    case ParamType::Matrix:
+      return "matrix";
   }
   return "float";
 }

@@ -1,11 +1,11 @@
 #include "parser/request_reader.h"
 
-#include "parser/standard_declarations.h"
-
 #include <fmt/format.h>
 
 #include <cmath>
 #include <limits>
+
+#include "parser/standard_declarations.h"
 
 namespace darc {
 
@@ -47,11 +47,6 @@ void RequestReader::fail_expected(const std::string& what) {
   throw RibSyntaxError(lexer_.loc(t), fmt::format("expected {}, found {}", what, describe(t)));
 }
 
-Token RequestReader::take_checked(TokenKind kind, const std::string& what) {
-  if (lexer_.peek().kind != kind) fail_expected(what);
-  return lexer_.next();
-}
-
 int RequestReader::to_integer(const Token& token, const std::string& what) const {
   if (!is_integral_int(token.number)) {
     throw RibSyntaxError(lexer_.loc(token),
@@ -61,29 +56,35 @@ int RequestReader::to_integer(const Token& token, const std::string& what) const
 }
 
 double RequestReader::number(const char* what) {
-  return take_checked(TokenKind::Number, fmt::format("a number for {}", what)).number;
+  if (lexer_.peek().kind != TokenKind::Number) fail_expected(fmt::format("a number for {}", what));
+  return lexer_.next().number;
 }
 
 int RequestReader::integer(const char* what) {
-  const Token t = take_checked(TokenKind::Number, fmt::format("an integer for {}", what));
-  return to_integer(t, what);
+  if (lexer_.peek().kind != TokenKind::Number) fail_expected(fmt::format("an integer for {}", what));
+  return to_integer(lexer_.next(), what);
 }
 
 std::string RequestReader::string(const char* what) {
-  return take_checked(TokenKind::String, fmt::format("a string for {}", what)).text;
+  if (lexer_.peek().kind != TokenKind::String) fail_expected(fmt::format("a string for {}", what));
+  return lexer_.next().text;
 }
 
 void RequestReader::read_fixed_numbers(double* out, size_t count, const char* what) {
   const bool bracketed = lexer_.peek().kind == TokenKind::ArrayBegin;
   if (bracketed) lexer_.next();
   for (size_t i = 0; i < count; ++i) {
-    out[i] = take_checked(TokenKind::Number, fmt::format("{} numbers for {} (got {})", count, what, i)).number;
+    if (lexer_.peek().kind != TokenKind::Number)
+      fail_expected(fmt::format("{} numbers for {} (got {})", count, what, i));
+    out[i] = lexer_.next().number;
   }
   if (!bracketed) return;
   if (lexer_.peek().kind == TokenKind::Number) {
     throw RibSyntaxError(lexer_.loc(lexer_.peek()), fmt::format("too many numbers for {}: expected {}", what, count));
   }
-  take_checked(TokenKind::ArrayEnd, fmt::format("']' after the {} numbers of {}", count, what));
+  if (lexer_.peek().kind != TokenKind::ArrayEnd)
+    fail_expected(fmt::format("']' after the {} numbers of {}", count, what));
+  lexer_.next();
 }
 
 std::vector<int> RequestReader::integer_array(const char* what) {
@@ -92,10 +93,11 @@ std::vector<int> RequestReader::integer_array(const char* what) {
     values.push_back(to_integer(lexer_.next(), what));
     return values;
   }
-  take_checked(TokenKind::ArrayBegin, fmt::format("an integer array for {}", what));
+  if (lexer_.peek().kind != TokenKind::ArrayBegin) fail_expected(fmt::format("an integer array for {}", what));
+  lexer_.next();
   while (lexer_.peek().kind != TokenKind::ArrayEnd) {
-    const Token t = take_checked(TokenKind::Number, fmt::format("an integer or ']' in {}", what));
-    values.push_back(to_integer(t, what));
+    if (lexer_.peek().kind != TokenKind::Number) fail_expected(fmt::format("an integer or ']' in {}", what));
+    values.push_back(to_integer(lexer_.next(), what));
   }
   lexer_.next();
   return values;
@@ -133,7 +135,6 @@ void RequestReader::flatten_rest(std::vector<double>& numbers, std::vector<std::
 }
 
 void RequestReader::read_values(Param& param) {
-  const std::string what = fmt::format("a value for parameter \"{}\"", param.name);
   const Token& first = lexer_.peek();
   if (first.kind == TokenKind::Number) {
     param.floats.push_back(static_cast<float>(lexer_.next().number));
@@ -143,7 +144,8 @@ void RequestReader::read_values(Param& param) {
     param.strings.push_back(lexer_.next().text);
     return;
   }
-  take_checked(TokenKind::ArrayBegin, what);
+  if (first.kind != TokenKind::ArrayBegin) fail_expected(fmt::format("a value for parameter \"{}\"", param.name));
+  lexer_.next();
   while (true) {
     const Token& t = lexer_.peek();
     if (t.kind == TokenKind::ArrayEnd) break;
@@ -172,8 +174,9 @@ ParamDecl RequestReader::resolve_declaration(const std::string& request, const P
     inferred.array_size = std::max<int>(1, static_cast<int>(param.floats.size()));
   }
   if (warn_undeclared) {
-    diag_.warning_once("undeclared parameter " + param.name, param.loc, request,
-                       fmt::format("parameter \"{}\" is not declared: assuming \"{}\"", param.name, to_string(inferred)));
+    diag_.warning_once(
+        "undeclared parameter " + param.name, param.loc, request,
+        fmt::format("parameter \"{}\" is not declared: assuming \"{}\"", param.name, to_string(inferred)));
   }
   return inferred;
 }
@@ -181,8 +184,8 @@ ParamDecl RequestReader::resolve_declaration(const std::string& request, const P
 void RequestReader::check_values(const Param& param) const {
   const ParamDecl& d = param.decl;
   if (d.is_string() && !param.floats.empty()) {
-    throw RibSyntaxError(param.loc, fmt::format("\"{}\": expected strings for a string parameter, found numbers",
-                                                param.name));
+    throw RibSyntaxError(param.loc,
+                         fmt::format("\"{}\": expected strings for a string parameter, found numbers", param.name));
   }
   if (!d.is_string() && !param.strings.empty()) {
     throw RibSyntaxError(param.loc, fmt::format("\"{}\": expected numbers for a {} parameter, found strings",
@@ -212,7 +215,8 @@ ParamList RequestReader::param_list(const std::string& request) {
 ParamList RequestReader::read_param_list(const std::string& request, bool warn_undeclared) {
   ParamList list;
   while (!at_request_end()) {
-    const Token token = take_checked(TokenKind::String, "a parameter name (a string)");
+    if (lexer_.peek().kind != TokenKind::String) fail_expected("a parameter name (a string)");
+    const Token token = lexer_.next();
     Param param;
     param.loc = lexer_.loc(token);
     std::optional<ParamDecl> inline_decl = parse_inline_decl(token.text, param.name);

@@ -4,15 +4,15 @@
 // consuming the offending token, so the parser can resume at the next request name.
 #pragma once
 
-#include "parser/diagnostics.h"
-#include "parser/lexer.h"
-#include "parser/param_list.h"
-#include "parser/ri_target.h"
-
 #include <array>
 #include <string>
 #include <unordered_map>
 #include <vector>
+
+#include "parser/diagnostics.h"
+#include "parser/lexer.h"
+#include "parser/param_list.h"
+#include "parser/ri_target.h"
 
 namespace darc {
 
@@ -70,7 +70,6 @@ class RequestReader {
   ParamList read_param_list(const std::string& request, bool warn_undeclared);
   ParamDecl resolve_declaration(const std::string& request, const Param& param, bool warn_undeclared);
   void check_values(const Param& param) const;
-  Token take_checked(TokenKind kind, const std::string& what);
   int to_integer(const Token& token, const std::string& what) const;
 
   Lexer& lexer_;

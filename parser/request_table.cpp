@@ -398,12 +398,30 @@ RequestHandler find_request_handler(std::string_view name) {
 }
 
 bool is_unsupported_request(std::string_view name) {
-  static constexpr std::array<std::string_view, 24> kUnsupported = {
-      "Cone",      "Cylinder",      "Disk",         "Paraboloid",     "Hyperboloid",     "Torus",
-      "Patch",     "PatchMesh",     "NuPatch",      "TrimCurve",      "Points",          "SubdivisionMesh",
-      "Blobby",    "Procedural",    "Geometry",     "SolidBegin",     "SolidEnd",        "MakeLatLongEnvironment",
-      "MakeCubeFaceEnvironment",    "MakeBump",     "Deformation",    "Resource",        "ResourceBegin",
-      "ResourceEnd"};
+  static constexpr std::array<std::string_view, 24> kUnsupported = {"Cone",
+                                                                    "Cylinder",
+                                                                    "Disk",
+                                                                    "Paraboloid",
+                                                                    "Hyperboloid",
+                                                                    "Torus",
+                                                                    "Patch",
+                                                                    "PatchMesh",
+                                                                    "NuPatch",
+                                                                    "TrimCurve",
+                                                                    "Points",
+                                                                    "SubdivisionMesh",
+                                                                    "Blobby",
+                                                                    "Procedural",
+                                                                    "Geometry",
+                                                                    "SolidBegin",
+                                                                    "SolidEnd",
+                                                                    "MakeLatLongEnvironment",
+                                                                    "MakeCubeFaceEnvironment",
+                                                                    "MakeBump",
+                                                                    "Deformation",
+                                                                    "Resource",
+                                                                    "ResourceBegin",
+                                                                    "ResourceEnd"};
   return std::find(kUnsupported.begin(), kUnsupported.end(), name) != kUnsupported.end();
 }
 

@@ -3,11 +3,11 @@
 // ReadArchive) are handled by RibParser itself and are not in this table.
 #pragma once
 
-#include "parser/request_reader.h"
-#include "parser/ri_target.h"
-
 #include <string>
 #include <string_view>
+
+#include "parser/request_reader.h"
+#include "parser/ri_target.h"
 
 namespace darc {
 

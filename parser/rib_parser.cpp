@@ -1,13 +1,13 @@
 #include "parser/rib_parser.h"
 
-#include "parser/lexer.h"
-#include "parser/request_table.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+
+#include "parser/lexer.h"
+#include "parser/request_table.h"
 
 namespace darc {
 

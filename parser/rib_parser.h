@@ -5,13 +5,13 @@
 // Option "searchpath" "archive".
 #pragma once
 
-#include "parser/diagnostics.h"
-#include "parser/request_reader.h"
-#include "parser/ri_target.h"
-
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "parser/diagnostics.h"
+#include "parser/request_reader.h"
+#include "parser/ri_target.h"
 
 namespace darc {
 

@@ -54,12 +54,23 @@ std::string rib_string(const std::string& s) {
   std::string out = "\"";
   for (char c : s) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      default: out += c;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      default:
+        out += c;
     }
   }
   return out + "\"";
@@ -112,8 +123,8 @@ void RibWriter::frame_aspect_ratio(double ratio, const SourceLoc&) {
 }
 
 void RibWriter::screen_window(double left, double right, double bottom, double top, const SourceLoc&) {
-  begin_line("ScreenWindow") << ' ' << rib_number(left) << ' ' << rib_number(right) << ' ' << rib_number(bottom)
-                             << ' ' << rib_number(top) << '\n';
+  begin_line("ScreenWindow") << ' ' << rib_number(left) << ' ' << rib_number(right) << ' ' << rib_number(bottom) << ' '
+                             << rib_number(top) << '\n';
 }
 
 void RibWriter::crop_window(double xmin, double xmax, double ymin, double ymax, const SourceLoc&) {
@@ -263,8 +274,7 @@ void RibWriter::illuminate(const std::string& handle, bool on, const SourceLoc&)
 }
 
 void RibWriter::basis(const BasisArg& ubasis, int ustep, const BasisArg& vbasis, int vstep, const SourceLoc&) {
-  begin_line("Basis") << ' ' << rib_basis(ubasis) << ' ' << ustep << ' ' << rib_basis(vbasis) << ' ' << vstep
-                      << '\n';
+  begin_line("Basis") << ' ' << rib_basis(ubasis) << ' ' << ustep << ' ' << rib_basis(vbasis) << ' ' << vstep << '\n';
 }
 
 void RibWriter::object_begin(const std::string& handle, const SourceLoc&) {

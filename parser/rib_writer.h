@@ -4,10 +4,10 @@
 // reads back to the same value. Parsing its output again gives the same calls and text.
 #pragma once
 
-#include "parser/ri_target.h"
-
 #include <ostream>
 #include <string>
+
+#include "parser/ri_target.h"
 
 namespace darc {
 
@@ -78,13 +78,11 @@ class RibWriter : public RiTarget {
   void sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
               const SourceLoc& loc) override;
   void polygon(const ParamList& params, const SourceLoc& loc) override;
-  void general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params,
-                       const SourceLoc& loc) override;
+  void general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params, const SourceLoc& loc) override;
   void points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,
                        const ParamList& params, const SourceLoc& loc) override;
   void points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
-                               const std::vector<int>& indices, const ParamList& params,
-                               const SourceLoc& loc) override;
+                               const std::vector<int>& indices, const ParamList& params, const SourceLoc& loc) override;
 
  private:
   // Starts a request line at the current indentation.

@@ -3,10 +3,10 @@
 // `"P" [...]` or `"intensity" [3000]` need no Declare.
 #pragma once
 
-#include "parser/param_list.h"
-
 #include <optional>
 #include <string_view>
+
+#include "parser/param_list.h"
 
 namespace darc {
 

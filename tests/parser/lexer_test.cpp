@@ -28,8 +28,8 @@ double lex_number(const std::string& spelling) {
 }
 
 TEST(Lexer, EveryRealWorldNumberSpellingMatchesStrtod) {
-  const char* spellings[] = {".5",  "-.35", "+2",        "5.",         "-3e-2", "1E+3", "4.000000",
-                             "3.04999995", "0", "-0", "1e-5", "255", "-1.99124e-15", "0.29552020666133966"};
+  const char* spellings[] = {".5",         "-.35", "+2", "5.",   "-3e-2", "1E+3",         "4.000000",
+                             "3.04999995", "0",    "-0", "1e-5", "255",   "-1.99124e-15", "0.29552020666133966"};
   for (const char* s : spellings) {
     EXPECT_EQ(lex_number(s), std::strtod(s, nullptr)) << s;
   }

@@ -1,7 +1,7 @@
+#include <gtest/gtest.h>
+
 #include "parser/param_list.h"
 #include "parser/standard_declarations.h"
-
-#include <gtest/gtest.h>
 
 namespace darc {
 namespace {

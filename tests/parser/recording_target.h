@@ -2,14 +2,13 @@
 // strings, so tests can look at what the parser delivered and compare two parses.
 #pragma once
 
-#include "parser/diagnostics.h"
-#include "parser/rib_parser.h"
-#include "parser/ri_target.h"
-
 #include <memory>
-
 #include <string>
 #include <vector>
+
+#include "parser/diagnostics.h"
+#include "parser/ri_target.h"
+#include "parser/rib_parser.h"
 
 namespace darc::test {
 
@@ -50,8 +49,12 @@ class RecordingTarget : public RiTarget {
   void declare(const std::string& name, const std::string& decl, const SourceLoc& loc) override {
     add("Declare", {}, {name, decl}, {}, loc);
   }
-  void option(const std::string& c, const ParamList& p, const SourceLoc& loc) override { add("Option", {}, {c}, p, loc); }
-  void format(int x, int y, double a, const SourceLoc& loc) override { add("Format", {double(x), double(y), a}, {}, {}, loc); }
+  void option(const std::string& c, const ParamList& p, const SourceLoc& loc) override {
+    add("Option", {}, {c}, p, loc);
+  }
+  void format(int x, int y, double a, const SourceLoc& loc) override {
+    add("Format", {double(x), double(y), a}, {}, {}, loc);
+  }
   void frame_aspect_ratio(double r, const SourceLoc& loc) override { add("FrameAspectRatio", {r}, {}, {}, loc); }
   void screen_window(double l, double r, double b, double t, const SourceLoc& loc) override {
     add("ScreenWindow", {l, r, b, t}, {}, {}, loc);
@@ -97,7 +100,9 @@ class RecordingTarget : public RiTarget {
   void concat_transform(const std::array<double, 16>& m, const SourceLoc& loc) override {
     add("ConcatTransform", {m.begin(), m.end()}, {}, {}, loc);
   }
-  void translate(double x, double y, double z, const SourceLoc& loc) override { add("Translate", {x, y, z}, {}, {}, loc); }
+  void translate(double x, double y, double z, const SourceLoc& loc) override {
+    add("Translate", {x, y, z}, {}, {}, loc);
+  }
   void rotate(double a, double x, double y, double z, const SourceLoc& loc) override {
     add("Rotate", {a, x, y, z}, {}, {}, loc);
   }
@@ -116,11 +121,15 @@ class RecordingTarget : public RiTarget {
   void orientation(const std::string& n, const SourceLoc& loc) override { add("Orientation", {}, {n}, {}, loc); }
   void reverse_orientation(const SourceLoc& loc) override { add("ReverseOrientation", {}, {}, {}, loc); }
   void sides(int n, const SourceLoc& loc) override { add("Sides", {double(n)}, {}, {}, loc); }
-  void color(const std::array<float, 3>& c, const SourceLoc& loc) override { add("Color", {c[0], c[1], c[2]}, {}, {}, loc); }
+  void color(const std::array<float, 3>& c, const SourceLoc& loc) override {
+    add("Color", {c[0], c[1], c[2]}, {}, {}, loc);
+  }
   void opacity(const std::array<float, 3>& c, const SourceLoc& loc) override {
     add("Opacity", {c[0], c[1], c[2]}, {}, {}, loc);
   }
-  void surface(const std::string& n, const ParamList& p, const SourceLoc& loc) override { add("Surface", {}, {n}, p, loc); }
+  void surface(const std::string& n, const ParamList& p, const SourceLoc& loc) override {
+    add("Surface", {}, {n}, p, loc);
+  }
   void displacement(const std::string& n, const ParamList& p, const SourceLoc& loc) override {
     add("Displacement", {}, {n}, p, loc);
   }

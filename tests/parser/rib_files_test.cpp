@@ -1,11 +1,11 @@
 // Reading files: ReadArchive (relative, search path, missing, cycles), gzip, missing files.
-#include "recording_target.h"
-
 #include <gtest/gtest.h>
 #include <zlib.h>
 
 #include <filesystem>
 #include <fstream>
+
+#include "recording_target.h"
 
 namespace darc::test {
 namespace {
@@ -73,9 +73,9 @@ TEST(RibFiles, ReadArchiveUsesTheSearchPathWithAmpersand) {
   dir.write("lib2/b.rib", "Sides 2\n");
   const std::string lib1 = (dir.path() / "lib1").string();
   const std::string lib2 = (dir.path() / "lib2").string();
-  const std::string main = dir.write(
-      "main.rib", "Option \"searchpath\" \"archive\" [\"" + lib1 + "\"]\nOption \"searchpath\" \"archive\" [\"" + lib2 +
-                      ":&\"]\nReadArchive \"a.rib\"\nReadArchive \"b.rib\"\n");
+  const std::string main = dir.write("main.rib", "Option \"searchpath\" \"archive\" [\"" + lib1 +
+                                                     "\"]\nOption \"searchpath\" \"archive\" [\"" + lib2 +
+                                                     ":&\"]\nReadArchive \"a.rib\"\nReadArchive \"b.rib\"\n");
   auto r = parse_file(main);
   EXPECT_TRUE(r->ok) << (r->diag.all().empty() ? "" : r->diag.all()[0].str());
   const auto sides = r->target.named("Sides");

@@ -1,9 +1,9 @@
 // Error positions, messages, recovery, and robustness against malformed input.
-#include "recording_target.h"
-
 #include <gtest/gtest.h>
 
 #include <random>
+
+#include "recording_target.h"
 
 namespace darc::test {
 namespace {
@@ -101,7 +101,8 @@ TEST(RibParserErrors, UnbalancedBrackets) {
 TEST(RibParserErrors, OutOfRangeNumbersAndNanSpellings) {
   auto r = parse_rib("Translate 1e999 0 0\nScale -nan 1 1\nRotate 1e39 0 0 1\nWorldBegin");
   EXPECT_EQ(r->errors().size(), 3u);
-  for (const Diagnostic& d : r->errors()) EXPECT_EQ(d.loc.column, d.request == "Scale" ? 7 : (d.request == "Rotate" ? 8 : 11));
+  for (const Diagnostic& d : r->errors())
+    EXPECT_EQ(d.loc.column, d.request == "Scale" ? 7 : (d.request == "Rotate" ? 8 : 11));
   EXPECT_EQ(r->target.calls.size(), 1u);
 }
 

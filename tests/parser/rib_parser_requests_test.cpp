@@ -1,7 +1,7 @@
 // Argument forms of each request, as real files write them.
-#include "recording_target.h"
-
 #include <gtest/gtest.h>
+
+#include "recording_target.h"
 
 namespace darc::test {
 namespace {
@@ -55,10 +55,9 @@ TEST(RibParserRequests, BlocksAndTransforms) {
       "FrameBegin 1 WorldBegin AttributeBegin TransformBegin Identity Translate 1 2 3 Rotate -37 1 0 0 "
       "Scale -1 1 1 Perspective 45 CoordinateSystem \"cam\" CoordSysTransform \"cam\" TransformEnd AttributeEnd "
       "WorldEnd FrameEnd");
-  const Strings expected = {"FrameBegin", "WorldBegin",  "AttributeBegin",   "TransformBegin",    "Identity",
-                            "Translate",  "Rotate",      "Scale",            "Perspective",       "CoordinateSystem",
-                            "CoordSysTransform",         "TransformEnd",     "AttributeEnd",      "WorldEnd",
-                            "FrameEnd"};
+  const Strings expected = {"FrameBegin",        "WorldBegin",   "AttributeBegin", "TransformBegin", "Identity",
+                            "Translate",         "Rotate",       "Scale",          "Perspective",    "CoordinateSystem",
+                            "CoordSysTransform", "TransformEnd", "AttributeEnd",   "WorldEnd",       "FrameEnd"};
   ASSERT_EQ(calls.size(), expected.size());
   for (size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(calls[i].request, expected[i]);
   EXPECT_EQ(calls[0].numbers, Numbers{1});
@@ -81,8 +80,7 @@ TEST(RibParserRequests, BasisByNameOrMatrix) {
   const RecordedCall named = single_call("Basis \"bezier\" 1 \"catmull-rom\" 1");
   EXPECT_EQ(named.strings, (Strings{"bezier", "catmull-rom"}));
   EXPECT_EQ(named.numbers[16], 1);
-  const RecordedCall matrix = single_call(
-      "Basis [-1 3 -3 1 3 -6 3 0 -3 3 0 0 1 0 0 0] 3 \"b-spline\" 1");
+  const RecordedCall matrix = single_call("Basis [-1 3 -3 1 3 -6 3 0 -3 3 0 0 1 0 0 0] 3 \"b-spline\" 1");
   EXPECT_EQ(matrix.strings, (Strings{"", "b-spline"}));
   EXPECT_EQ(matrix.numbers[0], -1);
   EXPECT_EQ(matrix.numbers[12], 1);
@@ -92,9 +90,9 @@ TEST(RibParserRequests, BasisByNameOrMatrix) {
 }
 
 TEST(RibParserRequests, GeometryFixedArguments) {
-  const RecordedCall curves =
-      single_call("Curves \"cubic\" [4 7] \"nonperiodic\" \"P\" [0 0 0 1 1 1 2 2 2 3 3 3 "
-                  "0 0 0 1 1 1 2 2 2 3 3 3 4 4 4 5 5 5 6 6 6] \"constantwidth\" 0.5");
+  const RecordedCall curves = single_call(
+      "Curves \"cubic\" [4 7] \"nonperiodic\" \"P\" [0 0 0 1 1 1 2 2 2 3 3 3 "
+      "0 0 0 1 1 1 2 2 2 3 3 3 4 4 4 5 5 5 6 6 6] \"constantwidth\" 0.5");
   EXPECT_EQ(curves.strings, (Strings{"cubic", "nonperiodic"}));
   EXPECT_EQ(curves.numbers, (Numbers{4, 7}));
   ASSERT_EQ(curves.params.params.size(), 2u);
@@ -124,16 +122,17 @@ TEST(RibParserRequests, InlineDeclarationsOverrideTheStandardTable) {
       "LightSource \"pointlight\" 1 \"constant float intensity\" [3000] \"constant color lightcolor\" [1 1 1]");
   EXPECT_EQ(light.params.find("intensity")->decl, *parse_param_decl("constant float"));
   EXPECT_EQ(light.params.find("lightcolor")->element_count(), 1u);
-  const RecordedCall curves =
-      single_call("Curves \"linear\" [2] \"nonperiodic\" \"vertex point P\" [0 0 0 1 1 1] "
-                  "\"uniform float constantwidth\" [0.8]");
+  const RecordedCall curves = single_call(
+      "Curves \"linear\" [2] \"nonperiodic\" \"vertex point P\" [0 0 0 1 1 1] "
+      "\"uniform float constantwidth\" [0.8]");
   EXPECT_EQ(curves.params.find("P")->decl, *parse_param_decl("vertex point"));
   EXPECT_EQ(curves.params.find("constantwidth")->decl, *parse_param_decl("uniform float"));
 }
 
 TEST(RibParserRequests, StandardTableTypesUndeclaredNames) {
-  const RecordedCall c = single_call("Curves \"linear\" [2] \"nonperiodic\" \"P\" [0 0 0 1 1 1] \"width\" [.1 .2] "
-                                     "\"Cs\" [1 0 0 0 1 0] \"st\" [0 0 1 1]");
+  const RecordedCall c = single_call(
+      "Curves \"linear\" [2] \"nonperiodic\" \"P\" [0 0 0 1 1 1] \"width\" [.1 .2] "
+      "\"Cs\" [1 0 0 0 1 0] \"st\" [0 0 1 1]");
   EXPECT_EQ(c.params.find("width")->decl, *parse_param_decl("varying float"));
   EXPECT_EQ(c.params.find("Cs")->decl, *parse_param_decl("varying color"));
   EXPECT_EQ(c.params.find("st")->element_count(), 2u);
@@ -184,7 +183,8 @@ TEST(RibParserRequests, IgnoredRequestsPassTheirArguments) {
   const auto calls = clean_calls(
       "Shutter 0 1\nShadingRate 1\nShadingInterpolation \"constant\"\nMatte 0\nBound [0 1 0 1 0 1]\n"
       "MotionBegin [0 1]\nMotionEnd\nSkew 45 0 1 0 1 0 0\nAtmosphere \"fog\" \"distance\" 5\n"
-      "MakeTexture \"a.tif\" \"a.tx\" \"periodic\" \"clamp\" \"gaussian\" 2 2 \"float bias\" 0.5\nDepthOfField 22 45 1200");
+      "MakeTexture \"a.tif\" \"a.tx\" \"periodic\" \"clamp\" \"gaussian\" 2 2 \"float bias\" 0.5\nDepthOfField 22 45 "
+      "1200");
   ASSERT_EQ(calls.size(), 11u);
   EXPECT_EQ(calls[0].request, "Shutter");
   EXPECT_EQ(calls[0].numbers, (Numbers{0, 1}));

@@ -1,12 +1,13 @@
 // RibWriter: canonical output, and the round trip parse -> write A -> parse A -> write B with
 // A == B and the same calls both times.
 #include "parser/rib_writer.h"
-#include "recording_target.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <sstream>
+
+#include "recording_target.h"
 
 namespace darc::test {
 namespace {
