@@ -8,6 +8,7 @@
 #include "parser/rib_parser.h"
 #include "parser/rib_writer.h"
 
+#include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -25,6 +26,12 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
+// --skip-existing: a frame counts as done when its file exists and its header opens.
+bool image_file_is_readable(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  return in != nullptr;
+}
+
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 bool has_image_extension(const std::string& name) {
@@ -40,13 +47,6 @@ std::string output_path(const AppOptions& o, const OutputSettings& out) {
   name = substitute_frame_number(name, out.frame_number);
   if (!has_image_extension(name)) name += (out.display_type == "openexr" || out.display_type == "exr") ? ".exr" : ".tif";
   return name;
-}
-
-int count_bad_pixels(const Image& image) {
-  int bad = 0;
-  for (float v : image.pixels)
-    if (!std::isfinite(v)) ++bad;
-  return bad;
 }
 
 nlohmann::json counters_json(const RayCounters& c) {
@@ -79,7 +79,12 @@ int run_render_session(const AppOptions& o) {
     return diag.error_count() > 0 ? kExitSceneError : kExitOk;
   }
 
-  ColorConfig colors = ColorConfig::load(o.ocio_config);
+  ColorConfigLookup lookup = find_color_config(o.ocio_config);
+  if (!lookup.config) {
+    std::fprintf(stderr, "darc: error: %s\n", lookup.error.c_str());
+    return kExitUsage;
+  }
+  const ColorConfig& colors = *lookup.config;
   ProgressReporter progress(o.progress || !o.quiet, isatty(STDERR_FILENO) != 0);
   nlohmann::json stats_frames = nlohmann::json::array();
   bool io_error = false;
@@ -117,12 +122,13 @@ int run_render_session(const AppOptions& o) {
     ImageMetadata meta;
     meta.software = std::string("darc ") + DARC_VERSION;
     meta.hider = to_string(o.hider);
-    meta.samples_x = int(scene.output.pixel_samples[0]);
-    meta.samples_y = int(scene.output.pixel_samples[1]);
-    meta.render_seconds = stats.render_seconds;
-    int bad = count_bad_pixels(image);
-    if (bad > 0) std::fprintf(stderr, "darc: error: %d non-finite pixel values replaced by 0 in %s\n", bad, path.c_str());
+    meta.samples_per_pixel = int(scene.output.pixel_samples[0] * scene.output.pixel_samples[1]);
+    meta.render_seconds = float(stats.render_seconds);
     WriteResult wr = write_image(path, image, meta, colors, scene.output.display_mode);
+    for (const std::string& w : wr.warnings) std::fprintf(stderr, "darc: warning: %s: %s\n", path.c_str(), w.c_str());
+    if (wr.nonfinite_replaced > 0)
+      std::fprintf(stderr, "darc: warning: %lld non-finite values written as 0 in %s\n",
+                   static_cast<long long>(wr.nonfinite_replaced), path.c_str());
     if (!wr.ok) {
       std::fprintf(stderr, "darc: error: cannot write %s: %s\n", path.c_str(), wr.error.c_str());
       io_error = true;

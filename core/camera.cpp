@@ -1,6 +1,8 @@
 #include "core/camera.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace darc {

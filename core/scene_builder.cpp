@@ -1,5 +1,6 @@
 #include "core/scene_builder.h"
 
+#include "core/curve_builder.h"
 #include "core/curve_set.h"
 
 #include <algorithm>
@@ -18,11 +19,6 @@ constexpr double kMaxPixelSamples = 64;
 const char* block_name(int b) {
   static const char* names[] = {"FrameBegin", "WorldBegin", "AttributeBegin", "TransformBegin", "ObjectBegin"};
   return names[b];
-}
-
-std::array<float, 3> first_color(const Param* p) {
-  if (!p || p->floats.size() < 3) return {1, 1, 1};
-  return {p->floats[0], p->floats[1], p->floats[2]};
 }
 
 }  // namespace
@@ -329,7 +325,7 @@ void SceneBuilder::display(const std::string& name, const std::string& type, con
   else if (type == "framebuffer" || type == "it")
     diag_.warning_once("displaytype:" + type, loc, "Display",
                        "display type \"" + type + "\" has no window in darc: writing the file instead");
-  static const char* modes[] = {"rgb", "rgba", "z", "rgbz", "rgbaz", "a"};
+  static const char* modes[] = {"rgb", "rgba", "z", "rgbz", "rgbaz"};
   std::string m = mode;
   if (std::find(std::begin(modes), std::end(modes), m) == std::end(modes)) {
     diag_.warning(loc, "Display", "display mode \"" + mode + "\" not supported: using rgba");
@@ -418,9 +414,10 @@ void SceneBuilder::coord_sys_transform(const std::string& name, const SourceLoc&
 
 void SceneBuilder::attribute(const std::string& category, const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.attribute(category, params, loc); })) return;
-  for (const Param& p : params.params)
-    diag_.warning_once("attribute:" + category + ":" + p.name, loc, "Attribute",
-                       "Attribute \"" + category + "\" \"" + p.name + "\" has no effect in darc: ignored");
+  (void)params;
+  // One warning per category: real files repeat vendor attributes on every object.
+  diag_.warning_once("attribute:" + category, loc, "Attribute",
+                     "Attribute \"" + category + "\" has no effect in darc: ignored");
 }
 
 bool SceneBuilder::object_space_left_handed() const {
@@ -516,7 +513,7 @@ void SceneBuilder::basis(const BasisArg& u, int ustep, const BasisArg& v, int vs
   if (record([=](SceneBuilder& b) { b.basis(u, ustep, v, vstep, loc); })) return;
   auto resolve = [&](const BasisArg& a, int step) -> CurveBasis {
     if (step < 1) throw RibError("basis step must be at least 1, found " + std::to_string(step));
-    if (a.name.empty()) return CurveBasis::from_matrix(a.matrix, step);
+    if (a.name.empty()) return basis_from_matrix(a.matrix, step);
     auto b = standard_basis(a.name);
     if (!b) throw RibError("unknown basis \"" + a.name + "\"");
     b->step = step;

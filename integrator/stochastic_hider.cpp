@@ -2,6 +2,7 @@
 
 #include "integrator/sample_rng.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace darc {
@@ -18,14 +19,14 @@ constexpr float kContinueEpsilon = 1e-5f;
 
 }  // namespace
 
-SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, RayCounters& counters) {
+SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, RayCounters& counters, Mailbox& mailbox) {
   SampleValue out;
   out.depth = std::numeric_limits<float>::infinity();
   Vec3f transmittance{1, 1, 1};
   Ray ray = camera_ray;
   for (int layer = 0; layer < kMaxLayers; ++layer) {
     SurfaceInteraction hit;
-    if (!ctx.tracer.nearest_hit(ray, hit, counters)) break;
+    if (!ctx.tracer.nearest_hit(ray, hit, counters, mailbox)) break;
     if (layer == 0) out.depth = hit.t;
     ShadingPoint sp{hit.P, hit.N, ray.d, hit.Cs, hit.Os};
     ShadeResult r = ctx.shading.surface(hit.material).shade(sp, ctx.shading.lights(hit.material));
@@ -45,6 +46,7 @@ SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, Ray
 void render_tile_stochastic(const HiderContext& ctx, const PixelRect& rect, TileAccumulator& acc,
                             RayCounters& counters) {
   const int nx = ctx.samples_x, ny = ctx.samples_y;
+  Mailbox mailbox(ctx.scene.primitive_count());
   for (int py = rect.y0; py < rect.y1; ++py)
     for (int px = rect.x0; px < rect.x1; ++px)
       for (int sy = 0; sy < ny; ++sy)
@@ -55,7 +57,7 @@ void render_tile_stochastic(const HiderContext& ctx, const PixelRect& rect, Tile
           float y = py + (sy + rng.next_float()) / ny;
           Ray ray = ctx.scene.camera.generate_ray(x, y);
           ++counters.primary_rays;
-          SampleValue v = trace_camera_ray(ctx, ray, counters);
+          SampleValue v = trace_camera_ray(ctx, ray, counters, mailbox);
           acc.add_sample(x, y, {v.color.x, v.color.y, v.color.z, v.alpha}, v.depth);
         }
 }

@@ -29,6 +29,6 @@ struct SampleValue {
   float alpha = 0;
   float depth = 0;  // nearest hit distance (infinity when nothing was hit)
 };
-SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& ray, RayCounters& counters);
+SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& ray, RayCounters& counters, Mailbox& mailbox);
 
 }  // namespace darc

@@ -16,15 +16,15 @@ T bezier(const T* c, float u) {
 
 Tracer::Tracer(const Scene& scene) : scene_(scene) {}
 
-bool Tracer::nearest_hit(const Ray& ray_in, SurfaceInteraction& out, RayCounters& counters) const {
+bool Tracer::nearest_hit(const Ray& ray_in, SurfaceInteraction& out, RayCounters& counters, Mailbox& mailbox) const {
   Ray ray = ray_in;
   bool found = false;
   const CurveSet& cs = scene_.curves;
-  Mailbox mailbox;
+  mailbox.next_ray();
   scene_.grid.traverse(ray, [&](std::span<const uint32_t> prims, float, float t_exit) {
     ++counters.cells_visited;
     for (uint32_t p : prims) {
-      if (!mailbox.insert(p)) continue;
+      if (!mailbox.first_visit(p)) continue;
       uint32_t local;
       switch (scene_.prim_kind(p, local)) {
         case Scene::PrimKind::CurveSegment: {

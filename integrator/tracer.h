@@ -27,7 +27,8 @@ class Tracer {
 
   // Nearest visible hit with t in (ray.tmin, ray.tmax). Sides 1 primitives seen from behind
   // are not visible. Counters are added to `counters`.
-  bool nearest_hit(const Ray& ray, SurfaceInteraction& hit, RayCounters& counters) const;
+  // `mailbox` (one per thread, sized for the scene's primitives) makes each primitive tested once.
+  bool nearest_hit(const Ray& ray, SurfaceInteraction& hit, RayCounters& counters, Mailbox& mailbox) const;
 
  private:
   const Scene& scene_;

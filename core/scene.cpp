@@ -1,0 +1,17 @@
+#include "core/scene.h"
+
+namespace darc {
+
+void Scene::build_acceleration() {
+  std::vector<BBox> boxes;
+  boxes.reserve(primitive_count());
+  for (size_t i = 0; i < curves.size(); ++i) boxes.push_back(curves.segment_bounds(i));
+  for (const Sphere& s : spheres) boxes.push_back(s.bounds());
+  for (const PolygonShape& p : polygons) boxes.push_back(p.bounds());
+  bounds = BBox{};
+  for (const BBox& b : boxes)
+    if (!b.empty()) bounds.extend(b);
+  grid = UniformGrid::build(boxes);
+}
+
+}  // namespace darc
