@@ -15,7 +15,7 @@ struct AppOptions {
   std::string output;               // -o: overrides the Display name
   std::string preview;              // --preview: also write an 8-bit preview (PNG/TIFF/JPEG)
   int xres = 0, yres = 0;           // --res
-  HiderKind hider = HiderKind::Stochastic;
+  HiderKind hider = HiderKind::Distance;
   int pixel_samples = 0;            // --pixel-samples N (N x N); 0 keeps PixelSamples
   int threads = 0;
   std::optional<FrameList> frames;

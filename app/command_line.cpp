@@ -18,8 +18,8 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
   app.add_option("--preview", o.preview, "also write an 8-bit preview through the OCIO display transform");
   std::string res;
   app.add_option("--res", res, "resolution WxH (overrides Format)");
-  std::string hider = "stochastic";
-  app.add_option("--hider", hider, "distance|stochastic")->check(CLI::IsMember({"distance", "stochastic"}));
+  std::string hider = "distance";
+  app.add_option("--hider", hider, "distance (default) | stochastic")->check(CLI::IsMember({"distance", "stochastic"}));
   app.add_option("--pixel-samples", o.pixel_samples, "N x N samples per pixel (overrides PixelSamples)")
       ->check(CLI::Range(1, 64));
   app.add_option("--threads", o.threads, "threads, 0 = all cores")->check(CLI::Range(0, 1024));

@@ -1,5 +1,6 @@
 #include "integrator/render_frame.h"
 
+#include "integrator/distance_hider.h"
 #include "integrator/stochastic_hider.h"
 #include "integrator/tracer.h"
 #include "shading/scene_shading.h"
@@ -43,6 +44,9 @@ Image render_frame(const Scene& scene, const RenderOptions& options, Diagnostics
   HiderContext ctx{scene, shading, tracer, options.seed, std::max(1, int(std::lround(out.pixel_samples[0]))),
                    std::max(1, int(std::lround(out.pixel_samples[1])))};
 
+  std::optional<DistanceContext> distance;
+  if (options.hider == HiderKind::Distance) distance.emplace(make_distance_context(ctx, options.distance));
+
   std::vector<PixelRect> tiles = film.tiles();
   std::vector<std::optional<TileAccumulator>> accumulators(tiles.size());
   std::vector<RayCounters> counters(tiles.size());
@@ -55,7 +59,10 @@ Image render_frame(const Scene& scene, const RenderOptions& options, Diagnostics
     tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i != r.end(); ++i) {
         accumulators[i].emplace(film.make_accumulator(tiles[i]));
-        render_tile_stochastic(ctx, tiles[i], *accumulators[i], counters[i]);
+        if (distance)
+          render_tile_distance(*distance, tiles[i], *accumulators[i], counters[i]);
+        else
+          render_tile_stochastic(ctx, tiles[i], *accumulators[i], counters[i]);
         size_t n = ++done;
         if (options.progress) {
           std::lock_guard lock(progress_mutex);

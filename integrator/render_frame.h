@@ -4,6 +4,8 @@
 #pragma once
 
 #include "core/scene.h"
+#include "core/coverage.h"
+#include "integrator/distance_hider.h"
 #include "integrator/film.h"
 #include "integrator/render_stats.h"
 #include "parser/diagnostics.h"
@@ -22,6 +24,7 @@ struct RenderOptions {
   HiderKind hider = HiderKind::Stochastic;
   int threads = 0;     // 0: all cores
   uint32_t seed = 0;
+  DistanceHiderSettings distance;  // --hider distance only
   // Called with the fraction of tiles done, from one thread at a time.
   std::function<void(double)> progress;
 };

@@ -1,0 +1,279 @@
+#include "core/curve_distance_intersector.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/curve_basis.h"
+#include "core/curve_ray_space.h"
+
+namespace darc {
+
+namespace {
+
+// Projected tangents shorter than this fraction of the width are "seen end-on": the strand's
+// end has no direction on screen and gets no end fall-off.
+constexpr float kEndOnTangentFraction = 1e-3f;
+
+// The footprint in ray space (x, y of the ray frame) at one depth, and how it turns a distance
+// into coverage.
+struct FootprintAt {
+  float ax_x, ax_y, ay_x, ay_y;  // the two axes, projected onto the ray frame's xy plane
+  float r_box, r_disc;           // the radii of the box (seed) and disc forms
+  bool binary;                   // no footprint: coverage is a hit test
+
+  // Marginal widths of the square footprint along a unit 2D direction (nx, ny).
+  void square_extents(float nx, float ny, float& a, float& b) const {
+    a = std::abs(ax_x * nx + ax_y * ny);
+    b = std::abs(ay_x * nx + ay_y * ny);
+  }
+};
+
+struct DistanceState {
+  float ray_length;
+  float t_min, t_max;
+  const RayFootprint* footprint;
+  RayFrame frame;
+  CoverageModel model;
+  bool oriented;
+  Vec3f normal0, normal1, dir;
+  float reach0, reach1;  // footprint reach = reach0 + reach1 * t
+  // Best fragment so far.
+  bool found = false;
+  float coverage = 0, t = 0, u = 0, distance = 0;
+
+  float reach_at_depth(float z) const { return reach0 + reach1 * std::max(0.0f, z / ray_length); }
+
+  FootprintAt footprint_at(float t_hit) const {
+    FootprintAt f;
+    Vec3d ax(footprint->axis_x(t_hit)), ay(footprint->axis_y(t_hit));
+    f.ax_x = float(dot(ax, frame.x));
+    f.ax_y = float(dot(ax, frame.y));
+    f.ay_x = float(dot(ay, frame.x));
+    f.ay_y = float(dot(ay, frame.y));
+    float lx = std::hypot(f.ax_x, f.ax_y), ly = std::hypot(f.ay_x, f.ay_y);
+    // The box form's radius is half the sample spacing; the disc has the square's area.
+    f.r_box = std::max(0.25f * (lx + ly), footprint->min_radius);
+    f.r_disc = std::max(std::sqrt(lx * ly / std::numbers::pi_v<float>), footprint->min_radius);
+    f.binary = !(lx + ly > 2.0f * footprint->min_radius);
+    return f;
+  }
+};
+
+float orientation_scale(const DistanceState& s, float u) {
+  if (!s.oriented) return 1.0f;
+  Vec3f n = normalize(lerp(u, s.normal0, s.normal1));
+  if (length_squared(n) == 0.0f) n = s.normal0;
+  return std::abs(dot(n, s.dir));
+}
+
+// Coverage of a band of half-width hw at distance d whose 2D direction (along the strand) is
+// (tx, ty), unit.
+float band_coverage(const DistanceState& s, const FootprintAt& f, float d, float hw, float tx, float ty) {
+  if (f.binary) return d <= hw ? 1.0f : 0.0f;
+  switch (s.model) {
+    case CoverageModel::Box:
+      return coverage_box(d, hw, f.r_box);
+    case CoverageModel::Disc:
+      return coverage_disc(d, hw, f.r_disc);
+    case CoverageModel::Square: {
+      float a, b;
+      f.square_extents(-ty, tx, a, b);  // extents across the band
+      return coverage_square(d, hw, a, b);
+    }
+  }
+  return 0.0f;
+}
+
+// The fraction of the footprint on the strand's side of a strand end: e is the distance from
+// the end line to the ray centre, positive towards the strand; (tx, ty) the unit direction into
+// the strand.
+float end_falloff(const DistanceState& s, const FootprintAt& f, float e, float tx, float ty) {
+  if (f.binary) return e >= 0.0f ? 1.0f : 0.0f;
+  switch (s.model) {
+    case CoverageModel::Box:
+      return box_cdf(e, f.r_box);
+    case CoverageModel::Disc:
+      return disc_cdf(e, f.r_disc);
+    case CoverageModel::Square: {
+      float a, b;
+      f.square_extents(tx, ty, a, b);
+      return trapezoid_cdf(e, a, b);
+    }
+  }
+  return 1.0f;
+}
+
+// Unit 2D direction of a ray-space vector, false when it is too short to have one.
+bool unit_2d(const Vec3f& v, float min_length, float& x, float& y) {
+  float l = std::hypot(v.x, v.y);
+  if (!(l > min_length)) return false;
+  x = v.x / l;
+  y = v.y / l;
+  return true;
+}
+
+struct EndFalloff {
+  bool start = false, end = false;
+  Vec3f start_point, end_point;  // ray space
+  float start_tx = 0, start_ty = 0, end_tx = 0, end_ty = 0;
+};
+
+void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, const EndFalloff& ends,
+                   DistanceState& s) {
+  float chord_x = cp[3].x - cp[0].x, chord_y = cp[3].y - cp[0].y;
+  float chord_length2 = chord_x * chord_x + chord_y * chord_y;
+  float max_half_width = 0.5f * std::max(std::max(width[0], width[1]), std::max(width[2], width[3]));
+  float point_chord = kPointChordFraction * 2.0f * std::max(max_half_width, 0.0f);
+  // The closest approach of the ray to the leaf's chord, clamped to the leaf: no end
+  // half-plane tests here, since a strand beside the footprint covers it whichever leaf
+  // reports it (the best leaf per segment wins, the best segment per strand in the A-buffer).
+  float w = chord_length2 <= point_chord * point_chord
+                ? (cp[0].z <= cp[3].z ? 0.0f : 1.0f)
+                : std::clamp((-cp[0].x * chord_x - cp[0].y * chord_y) / chord_length2, 0.0f, 1.0f);
+  float u = std::clamp(u0 + (u1 - u0) * w, u0, u1);
+  float half_width = 0.5f * bezier_evaluate(width, w) * orientation_scale(s, u);
+  if (!(half_width > 0.0f)) return;
+  Vec3f pc = bezier_evaluate(cp, w);
+  float t = pc.z / s.ray_length;
+  if (!(t > s.t_min && t < s.t_max)) return;
+  float d = std::hypot(pc.x, pc.y);
+  FootprintAt f = s.footprint_at(t);
+  float tx = 1.0f, ty = 0.0f;
+  if (!unit_2d(bezier_derivative(cp, w), 0.0f, tx, ty) && !unit_2d(cp[3] - cp[0], 0.0f, tx, ty)) {
+    tx = 1.0f;
+    ty = 0.0f;
+  }
+  float coverage = band_coverage(s, f, d, half_width, tx, ty);
+  if (ends.start)
+    coverage *= end_falloff(s, f, -(ends.start_point.x * ends.start_tx + ends.start_point.y * ends.start_ty),
+                            ends.start_tx, ends.start_ty);
+  if (ends.end)
+    coverage *= end_falloff(s, f, -(ends.end_point.x * ends.end_tx + ends.end_point.y * ends.end_ty), ends.end_tx,
+                            ends.end_ty);
+  if (!(coverage > 0.0f)) return;
+  if (coverage > s.coverage || (coverage == s.coverage && t < s.t)) {
+    s.found = true;
+    s.coverage = coverage;
+    s.t = t;
+    s.u = u;
+    s.distance = d;
+  }
+}
+
+float half_max_width(const float width[4]) {
+  return std::max(0.0f, 0.5f * std::max(std::max(width[0], width[1]), std::max(width[2], width[3])));
+}
+
+void distance_recursive(const Vec3f cp[4], const float width[4], float u0, float u1, int depth,
+                        const EndFalloff& ends, DistanceState& s) {
+  if (depth == 0) {
+    distance_leaf(cp, width, u0, u1, ends, s);
+    return;
+  }
+  Vec3f cp_split[7];
+  float width_split[7];
+  bezier_split_half(cp, cp_split);
+  bezier_split_half(width, width_split);
+  float u_mid = 0.5f * (u0 + u1);
+  for (int half = 0; half < 2; ++half) {
+    const Vec3f* sub_cp = cp_split + 3 * half;
+    const float* sub_width = width_split + 3 * half;
+    float hw = half_max_width(sub_width);
+    if (!(hw > 0.0f)) continue;
+    float z_hi = std::max(std::max(sub_cp[0].z, sub_cp[1].z), std::max(sub_cp[2].z, sub_cp[3].z));
+    // Cull with the half-width plus the largest footprint over the sub-curve's depth range.
+    float margin = hw + s.reach_at_depth(z_hi + hw);
+    if (!bound_overlaps_ray(sub_cp, margin, s.t_min * s.ray_length, s.t_max * s.ray_length)) continue;
+    distance_recursive(sub_cp, sub_width, half == 0 ? u0 : u_mid, half == 0 ? u_mid : u1, depth - 1, ends, s);
+  }
+}
+
+bool finite3(const Vec3f& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+}  // namespace
+
+SegmentEnds segment_ends(const CurveSet& set, size_t i) {
+  SegmentEnds e;
+  uint32_t id = set.strand_id[i];
+  e.strand_start = i == 0 || set.strand_id[i - 1] != id;
+  e.strand_end = i + 1 == set.size() || set.strand_id[i + 1] != id;
+  if (e.strand_start || e.strand_end) {
+    // A closed (periodic) strand has no ends: its first point meets its last.
+    size_t first = i, last = i;
+    while (first > 0 && set.strand_id[first - 1] == id) --first;
+    while (last + 1 < set.size() && set.strand_id[last + 1] == id) ++last;
+    if (set.control_points(first)[0] == set.control_points(last)[3]) e.strand_start = e.strand_end = false;
+  }
+  return e;
+}
+
+bool intersect_segment_distance(const CurveSet& set, size_t segment, const Ray& ray, const RayFootprint& footprint,
+                                CoverageModel model, SegmentEnds ends, CurveFragmentHit& hit) {
+  const Vec3f* cp = set.control_points(segment);
+  const float* width = set.widths(segment);
+  float hw = half_max_width(width);
+  if (!(hw > 0.0f)) return false;
+  if (!finite3(ray.o) || !finite3(ray.d) || std::isnan(ray.tmin) || std::isnan(ray.tmax)) return false;
+  Vec3d dir(ray.d);
+  double ray_length = length(dir);
+  if (!(ray_length > 0.0)) return false;
+  dir = dir / ray_length;
+
+  Vec3d origin(ray.o);
+  Vec3d rel[4];
+  for (int i = 0; i < 4; ++i) rel[i] = Vec3d(cp[i]) - origin;
+  DistanceState s;
+  s.frame = make_ray_frame(dir, rel[3] - rel[0]);
+  Vec3f ray_cp[4];
+  for (int i = 0; i < 4; ++i) ray_cp[i] = s.frame.to_ray_space(rel[i]);
+
+  s.ray_length = float(ray_length);
+  s.t_min = ray.tmin;
+  s.t_max = ray.tmax;
+  s.footprint = &footprint;
+  s.model = model;
+  s.oriented = !set.oriented.empty() && set.oriented[segment] != 0;
+  if (s.oriented) {
+    s.normal0 = set.normal[segment * kNormalsPerSegment];
+    s.normal1 = set.normal[segment * kNormalsPerSegment + 1];
+  }
+  s.dir = Vec3f(dir);
+  // reach(t) in terms of the ray parameter (footprints are given per unit of t).
+  s.reach0 = footprint.reach(0.0f);
+  s.reach1 = footprint.reach(1.0f) - s.reach0;
+
+  float z_hi = std::max(std::max(ray_cp[0].z, ray_cp[1].z), std::max(ray_cp[2].z, ray_cp[3].z));
+  float z_lo = std::min(std::min(ray_cp[0].z, ray_cp[1].z), std::min(ray_cp[2].z, ray_cp[3].z));
+  if (!bound_overlaps_ray(ray_cp, hw + s.reach_at_depth(z_hi + hw), s.t_min * s.ray_length,
+                          s.t_max * s.ray_length))
+    return false;
+
+  EndFalloff fall;
+  float min_tangent = kEndOnTangentFraction * 2.0f * hw;
+  if (ends.strand_start) {
+    Vec3f d0 = ray_cp[1] - ray_cp[0];
+    if (length_squared(d0) == 0.0f) d0 = ray_cp[2] - ray_cp[0];
+    fall.start = unit_2d(d0, min_tangent, fall.start_tx, fall.start_ty);
+    fall.start_point = ray_cp[0];
+  }
+  if (ends.strand_end) {
+    Vec3f d1 = ray_cp[2] - ray_cp[3];
+    if (length_squared(d1) == 0.0f) d1 = ray_cp[1] - ray_cp[3];
+    fall.end = unit_2d(d1, min_tangent, fall.end_tx, fall.end_ty);
+    fall.end_point = ray_cp[3];
+  }
+
+  // Refine until leaves are flat relative to max(width, footprint): far, sub-pixel hair needs no
+  // leaves flatter than the footprint it is averaged over (curve-ray-tracing.md §6 case 2).
+  float nearest_footprint = 2.0f * s.reach_at_depth(std::max(z_lo, 0.0f));
+  int depth = refinement_depth(ray_cp, std::max(2.0f * hw, nearest_footprint));
+  distance_recursive(ray_cp, width, 0.0f, 1.0f, depth, fall, s);
+  if (!s.found) return false;
+  hit.t = s.t;
+  hit.coverage = std::min(s.coverage, 1.0f);
+  hit.u = s.u;
+  hit.distance = s.distance;
+  return true;
+}
+
+}  // namespace darc

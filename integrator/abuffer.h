@@ -1,0 +1,130 @@
+// The A-buffer of one ray of the distance-aware hider: partial hits (fragments) collected in
+// traversal order, deduplicated per strand, sorted now and then, and composited front to back
+// once they are final (no later traversal step can put anything in front of them).
+#pragma once
+
+#include "core/vec.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace darc {
+
+inline constexpr uint32_t kNoStrand = std::numeric_limits<uint32_t>::max();
+
+struct Fragment {
+  float t = 0;
+  float coverage = 1;        // fraction of the footprint covered
+  uint32_t strand = kNoStrand;  // curve strand id; kNoStrand for surfaces
+  uint32_t primitive = 0;    // grid primitive index (what to shade)
+  float u = 0;               // along the curve segment (curves only)
+  // Set when two fragments were merged because the list was full: colour and opacity are
+  // then already shaded and weighted by coverage.
+  bool preshaded = false;
+  Vec3f color, opacity;
+};
+
+struct ShadedFragment {
+  Vec3f Ci;  // premultiplied by Oi
+  Vec3f Oi;
+};
+
+// Longest A-buffer list: beyond it the two farthest fragments are merged into one (composited
+// with each other in depth order), which bounds memory per ray (curve-ray-tracing.md §6 case 9).
+inline constexpr size_t kMaxFragments = 64;
+
+class ABuffer {
+ public:
+  void clear() {
+    pending_.clear();
+    finished_strands_.clear();
+    color_ = {};
+    transmittance_ = {1, 1, 1};
+    peak_ = 0;
+    added_ = 0;
+  }
+
+  // Adds a fragment; a strand already in the list keeps its larger coverage (one fragment per
+  // strand per ray), a strand already composited is ignored. `shade` is used when the list is
+  // full and two fragments must be merged.
+  template <class Shade>
+  void add(const Fragment& f, Shade&& shade) {
+    if (f.strand != kNoStrand) {
+      if (std::find(finished_strands_.begin(), finished_strands_.end(), f.strand) != finished_strands_.end()) return;
+      for (Fragment& p : pending_)
+        if (p.strand == f.strand && !p.preshaded) {
+          if (f.coverage > p.coverage || (f.coverage == p.coverage && f.t < p.t)) p = f;
+          return;
+        }
+    }
+    pending_.push_back(f);
+    ++added_;
+    peak_ = std::max(peak_, pending_.size());
+    if (pending_.size() > kMaxFragments) merge_farthest(shade);
+  }
+
+  // Sorts the pending fragments and composites those with t <= t_final, front to back.
+  template <class Shade>
+  void composite_until(float t_final, Shade&& shade) {
+    sort_pending();
+    size_t n = 0;
+    while (n < pending_.size() && pending_[n].t <= t_final) {
+      composite(pending_[n], shade);
+      if (pending_[n].strand != kNoStrand) finished_strands_.push_back(pending_[n].strand);
+      ++n;
+    }
+    pending_.erase(pending_.begin(), pending_.begin() + long(n));
+  }
+
+  const Vec3f& color() const { return color_; }
+  const Vec3f& transmittance() const { return transmittance_; }
+  size_t peak_length() const { return peak_; }
+  size_t fragments_added() const { return added_; }
+
+ private:
+  void sort_pending() {
+    // Stable tie-break by strand: coplanar fragments composite in the same order on every run.
+    std::sort(pending_.begin(), pending_.end(), [](const Fragment& a, const Fragment& b) {
+      return a.t < b.t || (a.t == b.t && a.strand < b.strand);
+    });
+  }
+
+  template <class Shade>
+  ShadedFragment weighted(const Fragment& f, Shade& shade) const {
+    if (f.preshaded) return {f.color, f.opacity};
+    ShadedFragment s = shade(f);
+    return {s.Ci * f.coverage, s.Oi * f.coverage};
+  }
+
+  template <class Shade>
+  void composite(const Fragment& f, Shade& shade) {
+    ShadedFragment s = weighted(f, shade);
+    color_ += mul(transmittance_, s.Ci);
+    transmittance_ = mul(transmittance_, Vec3f{1, 1, 1} - s.Oi);
+  }
+
+  template <class Shade>
+  void merge_farthest(Shade& shade) {
+    sort_pending();
+    Fragment& near = pending_[pending_.size() - 2];
+    const Fragment& far = pending_.back();
+    ShadedFragment a = weighted(near, shade), b = weighted(far, shade);
+    Fragment m = near;
+    m.preshaded = true;
+    m.color = a.Ci + mul(Vec3f{1, 1, 1} - a.Oi, b.Ci);
+    m.opacity = Vec3f{1, 1, 1} - mul(Vec3f{1, 1, 1} - a.Oi, Vec3f{1, 1, 1} - b.Oi);
+    near = m;
+    pending_.pop_back();
+  }
+
+  std::vector<Fragment> pending_;
+  std::vector<uint32_t> finished_strands_;
+  Vec3f color_;
+  Vec3f transmittance_{1, 1, 1};
+  size_t peak_ = 0;
+  size_t added_ = 0;
+};
+
+}  // namespace darc

@@ -1,0 +1,179 @@
+#include "integrator/distance_hider.h"
+
+#include "core/footprint_traversal.h"
+#include "shading/shading_point.h"
+
+#include <limits>
+
+namespace darc {
+
+namespace {
+
+// Footprints never shrink below this fraction of the scene's size (r -> 0 at a pinhole's apex,
+// curve-ray-tracing.md §6 case 11).
+constexpr float kMinFootprintSceneFraction = 1e-7f;
+
+template <typename T>
+T bezier(const T* c, float u) {
+  float s = 1 - u;
+  return c[0] * (s * s * s) + c[1] * (3 * s * s * u) + c[2] * (3 * s * u * u) + c[3] * (u * u * u);
+}
+
+// The differentials of the camera ray through raster (x, y) for a sample spacing of `spacing`
+// pixels: the rays one spacing to the right and one down.
+RayFootprint camera_footprint(const Camera& cam, double x, double y, double spacing, const Ray& ray,
+                              float min_radius) {
+  Ray rx = cam.generate_ray(x + spacing, y), ry = cam.generate_ray(x, y + spacing);
+  RayFootprint f;
+  f.dox = rx.o - ray.o;
+  f.doy = ry.o - ray.o;
+  f.ddx = rx.d - ray.d;
+  f.ddy = ry.d - ray.d;
+  f.min_radius = min_radius;
+  return f;
+}
+
+}  // namespace
+
+DistanceContext make_distance_context(const HiderContext& base, const DistanceHiderSettings& settings) {
+  DistanceContext ctx{base, settings, {}, 0};
+  const CurveSet& cs = base.scene.curves;
+  ctx.ends.resize(cs.size());
+  for (size_t i = 0; i < cs.size(); ++i) ctx.ends[i] = segment_ends(cs, i);
+  Vec3f extent = base.scene.bounds.empty() ? Vec3f{1, 1, 1} : base.scene.bounds.extent();
+  ctx.min_radius = kMinFootprintSceneFraction * std::max(max_component(extent), 1e-6f);
+  return ctx;
+}
+
+SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray, const RayFootprint& footprint,
+                               RayCounters& counters, Mailbox& mailbox, ABuffer& abuffer) {
+  const Scene& scene = ctx.base.scene;
+  const CurveSet& cs = scene.curves;
+  Ray ray = camera_ray;
+  abuffer.clear();
+  mailbox.next_ray();
+  float nearest = std::numeric_limits<float>::infinity();
+
+  auto shade = [&](const Fragment& f) -> ShadedFragment {
+    uint32_t local;
+    Scene::PrimKind kind = scene.prim_kind(f.primitive, local);
+    ShadingPoint sp;
+    sp.P = camera_ray.at(f.t);
+    sp.I = camera_ray.d;
+    uint32_t material;
+    if (kind == Scene::PrimKind::CurveSegment) {
+      material = cs.attribute_id[local];
+      sp.N = -camera_ray.d;
+      if (cs.oriented[local]) {
+        sp.N = normalize(lerp(f.u, cs.normal[2 * local], cs.normal[2 * local + 1]));
+        if (scene.materials[material].flip_normals) sp.N = -sp.N;
+      }
+      sp.Cs = bezier(&cs.cs[4 * local], f.u);
+      sp.Os = bezier(&cs.os[4 * local], f.u);
+    } else {
+      SurfaceHit h;
+      Ray r = camera_ray;
+      r.tmin = f.t * (1 - 1e-4f);
+      r.tmax = f.t * (1 + 1e-4f) + 1e-6f;
+      bool is_sphere = kind == Scene::PrimKind::Sphere;
+      if (!(is_sphere ? scene.spheres[local].intersect(r, h) : scene.polygons[local].intersect(r, h))) h.ng = -r.d;
+      material = is_sphere ? scene.sphere_material[local] : scene.polygon_material[local];
+      const Material& m = scene.materials[material];
+      sp.N = m.flip_normals ? -h.ng : h.ng;
+      sp.Cs = m.color;
+      sp.Os = m.opacity;
+    }
+    ShadeResult r = ctx.base.shading.surface(material).shade(sp, ctx.base.shading.lights(material));
+    return {r.Ci, r.Oi};
+  };
+
+  auto visit_cell = [&](std::span<const uint32_t> prims) {
+    for (uint32_t p : prims) {
+      if (!mailbox.first_visit(p)) continue;
+      uint32_t local;
+      switch (scene.prim_kind(p, local)) {
+        case Scene::PrimKind::CurveSegment: {
+          ++counters.segment_tests;
+          CurveFragmentHit h;
+          if (!intersect_segment_distance(cs, local, ray, footprint, ctx.settings.coverage, ctx.ends[local], h)) break;
+          const Material& m = scene.materials[cs.attribute_id[local]];
+          if (cs.oriented[local] && m.sides == 1) {
+            Vec3f n = normalize(lerp(h.u, cs.normal[2 * local], cs.normal[2 * local + 1]));
+            if (m.flip_normals) n = -n;
+            if (dot(n, ray.d) > 0) break;
+          }
+          abuffer.add(Fragment{h.t, h.coverage, cs.strand_id[local], p, h.u}, shade);
+          nearest = std::min(nearest, h.t);
+          break;
+        }
+        case Scene::PrimKind::Sphere:
+        case Scene::PrimKind::Polygon: {
+          ++counters.surface_tests;
+          SurfaceHit h;
+          bool is_sphere = scene.prim_kind(p, local) == Scene::PrimKind::Sphere;
+          bool hit = is_sphere ? scene.spheres[local].intersect(ray, h) : scene.polygons[local].intersect(ray, h);
+          if (!hit) break;
+          uint32_t mi = is_sphere ? scene.sphere_material[local] : scene.polygon_material[local];
+          const Material& m = scene.materials[mi];
+          Vec3f n = m.flip_normals ? -h.ng : h.ng;
+          if (m.sides == 1 && dot(n, ray.d) > 0) break;
+          abuffer.add(Fragment{h.t, 1.0f, kNoStrand, p, 0}, shade);
+          nearest = std::min(nearest, h.t);
+          // Nothing behind an opaque surface can be seen.
+          if (m.opacity == Vec3f{1, 1, 1}) ray.tmax = std::min(ray.tmax, h.t);
+          break;
+        }
+      }
+    }
+  };
+
+  int layers = 0;
+  bool terminated = false;
+  auto layer_done = [&](float t_final) {
+    if (++layers % ctx.settings.sort_interval != 0 && t_final < ray.tmax) return true;
+    abuffer.composite_until(t_final, shade);
+    if (max_component(abuffer.transmittance()) < kDistanceMinTransmittance) {
+      terminated = true;
+      return false;
+    }
+    return t_final < ray.tmax;
+  };
+  counters.cells_visited += traverse_with_footprint(scene.grid, ray, footprint, visit_cell, layer_done);
+  if (terminated) {
+    ++counters.rays_terminated_early;
+  } else {
+    abuffer.composite_until(std::numeric_limits<float>::infinity(), shade);
+  }
+  counters.fragments += abuffer.fragments_added();
+  counters.peak_fragments = std::max<uint64_t>(counters.peak_fragments, abuffer.peak_length());
+
+  SampleValue out;
+  out.color = abuffer.color();
+  Vec3f tr = abuffer.transmittance();
+  out.alpha = 1.0f - (tr.x + tr.y + tr.z) / 3.0f;
+  out.depth = nearest;
+  return out;
+}
+
+void render_tile_distance(const DistanceContext& ctx, const PixelRect& rect, TileAccumulator& acc,
+                          RayCounters& counters) {
+  const int nx = ctx.base.samples_x, ny = ctx.base.samples_y;
+  const Camera& cam = ctx.base.scene.camera;
+  Mailbox mailbox(ctx.base.scene.primitive_count());
+  ABuffer abuffer;
+  double spacing = 1.0 / std::max(nx, ny);
+  for (int py = rect.y0; py < rect.y1; ++py)
+    for (int px = rect.x0; px < rect.x1; ++px)
+      for (int sy = 0; sy < ny; ++sy)
+        for (int sx = 0; sx < nx; ++sx) {
+          // Stratum centres: the footprint, not jitter, does the antialiasing.
+          double x = px + (sx + 0.5) / nx, y = py + (sy + 0.5) / ny;
+          Ray ray = cam.generate_ray(x, y);
+          RayFootprint fp = camera_footprint(cam, x, y, spacing, ray, ctx.min_radius);
+          ++counters.primary_rays;
+          SampleValue v = trace_distance_ray(ctx, ray, fp, counters, mailbox, abuffer);
+          acc.add_sample(float(x), float(y), {v.color.x, v.color.y, v.color.z, v.alpha}, v.depth);
+        }
+}
+
+}  // namespace darc
