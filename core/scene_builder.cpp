@@ -341,12 +341,22 @@ void SceneBuilder::hider(const std::string& type, const ParamList&, const Source
   options_.output.hider = type;
 }
 
-void SceneBuilder::ignored_request(const std::string& request, const std::vector<double>&,
+void SceneBuilder::ignored_request(const std::string& request, const std::vector<double>& numbers,
                                    const std::vector<std::string>&, const SourceLoc& loc) {
-  static const char* silent[] = {"Shutter", "ShadingRate", "ShadingInterpolation", "Matte", "Bound", "ErrorHandler",
+  static const char* silent[] = {"Shutter", "ShadingRate", "ShadingInterpolation", "Bound", "ErrorHandler",
                                  "ArchiveRecord", "Displacement", "RelativeDetail", "Detail", "DetailRange",
                                  "ColorSamples", "PixelVariance", "GeometricApproximation"};
-  if (request == "Matte" && in_world_) return;  // handled as not-a-holdout (see README)
+  if (request == "MotionBegin" || request == "MotionEnd") {
+    diag_.warning_once("motion", loc, request, "motion blur is not supported: the first motion sample is used");
+    in_motion_ = request == "MotionBegin";
+    motion_samples_seen_ = 0;
+    return;
+  }
+  if (request == "Matte") {
+    if (!numbers.empty() && numbers[0] != 0)
+      diag_.warning_once("matte", loc, "Matte", "holdout objects (Matte 1) are not supported: drawn as ordinary objects");
+    return;
+  }
   if (std::find(std::begin(silent), std::end(silent), request) != std::end(silent)) return;
   diag_.warning_once("ignored:" + request, loc, request, "not supported by darc: ignored");
 }
@@ -364,32 +374,38 @@ void SceneBuilder::identity(const SourceLoc& loc) {
 
 void SceneBuilder::transform(const std::array<double, 16>& m, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.transform(m, loc); })) return;
+  if (skip_motion_sample()) return;
   set_ctm(Matrix4::from_row_major(m.data()));
 }
 
 void SceneBuilder::concat_transform(const std::array<double, 16>& m, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.concat_transform(m, loc); })) return;
+  if (skip_motion_sample()) return;
   concat(Matrix4::from_row_major(m.data()));
 }
 
 void SceneBuilder::translate(double dx, double dy, double dz, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.translate(dx, dy, dz, loc); })) return;
+  if (skip_motion_sample()) return;
   concat(Matrix4::translate({dx, dy, dz}));
 }
 
 void SceneBuilder::rotate(double angle, double ax, double ay, double az, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.rotate(angle, ax, ay, az, loc); })) return;
+  if (skip_motion_sample()) return;
   if (ax == 0 && ay == 0 && az == 0) throw RibError("Rotate axis is the zero vector");
   concat(Matrix4::rotate(angle, {ax, ay, az}));
 }
 
 void SceneBuilder::scale(double sx, double sy, double sz, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.scale(sx, sy, sz, loc); })) return;
+  if (skip_motion_sample()) return;
   concat(Matrix4::scale({sx, sy, sz}));
 }
 
 void SceneBuilder::perspective(double fov, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.perspective(fov, loc); })) return;
+  if (skip_motion_sample()) return;
   if (!(fov > 0 && fov < 180)) throw RibError("Perspective fov must be in (0, 180)");
   concat(Matrix4::perspective(fov));
 }
@@ -526,6 +542,8 @@ void SceneBuilder::basis(const BasisArg& u, int ustep, const BasisArg& v, int vs
 
 // ---------------------------------------------------------------- instancing
 
+bool SceneBuilder::skip_motion_sample() { return in_motion_ && motion_samples_seen_++ > 0; }
+
 bool SceneBuilder::record(std::function<void(SceneBuilder&)> call) {
   if (!recording_) return false;
   recording_->push_back(std::move(call));
@@ -631,6 +649,7 @@ std::vector<float> read_points(const ParamList& params, const char* request) {
 void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
                           const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.curves(type, nvertices, wrap, params, loc); })) return;
+  if (skip_motion_sample()) return;
   if (!building_geometry("Curves", loc)) return;
   if (type != "linear" && type != "cubic")
     throw RibError("curve type must be \"linear\" or \"cubic\", found \"" + type + "\"");
@@ -661,6 +680,7 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
 void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
                           const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.sphere(radius, zmin, zmax, thetamax, params, loc); })) return;
+  if (skip_motion_sample()) return;
   if (!building_geometry("Sphere", loc)) return;
   if (radius == 0 || thetamax == 0) return;  // empty surface
   scene_->spheres.push_back(Sphere::make(radius, zmin, zmax, thetamax, ctm_));
@@ -669,28 +689,34 @@ void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetam
 
 void SceneBuilder::polygon(const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.polygon(params, loc); })) return;
+  if (skip_motion_sample()) return;
   std::vector<float> P = read_points(params, "Polygon");
-  general_polygon({int(P.size() / 3)}, params, loc);
+  if (P.size() < 9) throw RibError("a polygon needs at least 3 vertices, found " + std::to_string(P.size() / 3));
+  std::vector<int> indices(P.size() / 3);
+  for (size_t i = 0; i < indices.size(); ++i) indices[i] = int(i);
+  add_polygons({1}, {int(indices.size())}, indices, params, "Polygon", loc);
 }
 
 void SceneBuilder::general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params,
                                    const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.general_polygon(nverts_per_loop, params, loc); })) return;
-  std::vector<int> indices;
+  if (skip_motion_sample()) return;
   size_t total = 0;
   for (int n : nverts_per_loop) {
     if (n < 3) throw RibError("each loop needs at least 3 vertices, found " + std::to_string(n));
     total += size_t(n);
   }
-  for (size_t i = 0; i < total; ++i) indices.push_back(int(i));
-  points_general_polygons({int(nverts_per_loop.size())}, nverts_per_loop, indices, params, loc);
+  std::vector<int> indices(total);
+  for (size_t i = 0; i < total; ++i) indices[i] = int(i);
+  add_polygons({int(nverts_per_loop.size())}, nverts_per_loop, indices, params, "GeneralPolygon", loc);
 }
 
 void SceneBuilder::points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,
                                    const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.points_polygons(nverts_per_face, indices, params, loc); })) return;
+  if (skip_motion_sample()) return;
   std::vector<int> loops(nverts_per_face.size(), 1);
-  points_general_polygons(loops, nverts_per_face, indices, params, loc);
+  add_polygons(loops, nverts_per_face, indices, params, "PointsPolygons", loc);
 }
 
 void SceneBuilder::points_general_polygons(const std::vector<int>& nloops_per_face,
@@ -698,8 +724,15 @@ void SceneBuilder::points_general_polygons(const std::vector<int>& nloops_per_fa
                                            const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.points_general_polygons(nloops_per_face, nverts_per_loop, indices, params, loc); }))
     return;
-  if (!building_geometry("PointsGeneralPolygons", loc)) return;
-  std::vector<float> P = read_points(params, "PointsGeneralPolygons");
+  if (skip_motion_sample()) return;
+  add_polygons(nloops_per_face, nverts_per_loop, indices, params, "PointsGeneralPolygons", loc);
+}
+
+void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
+                                const std::vector<int>& indices, const ParamList& params, const char* request,
+                                const SourceLoc& loc) {
+  if (!building_geometry(request, loc)) return;
+  std::vector<float> P = read_points(params, request);
   std::vector<Vec3f> world(P.size() / 3);
   for (size_t i = 0; i < world.size(); ++i) world[i] = to_world(&P[3 * i]);
   std::string error;

@@ -128,6 +128,12 @@ class SceneBuilder : public RiTarget {
   Vec3f to_world(const float* p) const;
   void start_scene();
   void add_light(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc& loc);
+  // The common body of the four polygon requests.
+  void add_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
+                    const std::vector<int>& indices, const ParamList& params, const char* request,
+                    const SourceLoc& loc);
+  // Inside MotionBegin/MotionEnd only the first sample (the shutter-open one) is applied.
+  bool skip_motion_sample();
   // When recording an ObjectBegin block, stores the call and returns true.
   bool record(std::function<void(SceneBuilder&)> call);
 
@@ -163,6 +169,8 @@ class SceneBuilder : public RiTarget {
   std::map<std::string, std::vector<std::function<void(SceneBuilder&)>>> objects_;
   std::vector<std::function<void(SceneBuilder&)>>* recording_ = nullptr;
   bool replaying_ = false;
+  bool in_motion_ = false;
+  int motion_samples_seen_ = 0;
 };
 
 }  // namespace darc

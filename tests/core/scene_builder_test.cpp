@@ -1,0 +1,164 @@
+// SceneBuilder: the RI graphics state, frames, instancing and the scenes it hands over.
+#include "core/scene_builder.h"
+#include "parser/rib_parser.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+
+namespace darc {
+namespace {
+
+struct Built {
+  std::vector<Scene> scenes;
+  std::vector<int> failed;
+  std::vector<Diagnostic> diagnostics;
+};
+
+Built build(const std::string& rib, std::function<bool(int)> selected = {}) {
+  Built out;
+  Diagnostics diag([&](const Diagnostic& d) { out.diagnostics.push_back(d); });
+  SceneBuilder::Callbacks cb;
+  cb.frame_selected = std::move(selected);
+  cb.frame_ready = [&](Scene&& s) { out.scenes.push_back(std::move(s)); };
+  cb.frame_failed = [&](int f) { out.failed.push_back(f); };
+  SceneBuilder builder(diag, cb);
+  RibParser parser(builder, diag);
+  parser.parse_string(rib, "test.rib");
+  builder.finish(SourceLoc{});
+  return out;
+}
+
+std::set<uint32_t> strands(const CurveSet& cs) { return {cs.strand_id.begin(), cs.strand_id.end()}; }
+
+TEST(SceneBuilder, SharedBezierGrassHasOneHundredStrands) {
+  std::filesystem::path f = std::filesystem::path(DARC_SHARED_RIBS_DIR) / "aqsis" / "Curves_bezier.rib";
+  if (!std::filesystem::exists(f)) GTEST_SKIP() << "shared RIBs not found: " << f;
+  Built out;
+  Diagnostics diag([&](const Diagnostic& d) { out.diagnostics.push_back(d); });
+  SceneBuilder::Callbacks cb;
+  cb.frame_ready = [&](Scene&& s) { out.scenes.push_back(std::move(s)); };
+  SceneBuilder builder(diag, cb);
+  RibParser parser(builder, diag);
+  ASSERT_TRUE(parser.parse_file(f.string()));
+  ASSERT_EQ(out.scenes.size(), 1u);
+  const CurveSet& cs = out.scenes[0].curves;
+  EXPECT_EQ(strands(cs).size(), 100u);
+  EXPECT_EQ(cs.size(), 100u) << "one cubic Bézier segment per 4-vertex curve";
+  // Varying width 0.3 -> 0 becomes the elevated linear Bézier (0.3, 0.2, 0.1, 0).
+  EXPECT_NEAR(cs.width[0], 0.3f, 1e-6f);
+  EXPECT_NEAR(cs.width[3], 0.0f, 1e-6f);
+  EXPECT_EQ(out.scenes[0].output.display_name, "bezier.tif");
+  EXPECT_EQ(out.scenes[0].lights.size(), 1u);
+}
+
+TEST(SceneBuilder, WorldBlocksBecomeFramesAndOptionsAreFrameScoped) {
+  Built b = build(R"(Format 100 50 1
+FrameBegin 7
+Format 20 10 1
+Display "a.exr" "file" "rgba"
+WorldBegin Sphere 1 -1 1 360 WorldEnd
+FrameEnd
+FrameBegin 8
+WorldBegin Sphere 1 -1 1 360 WorldEnd
+FrameEnd)");
+  ASSERT_EQ(b.scenes.size(), 2u);
+  EXPECT_EQ(b.scenes[0].output.frame_number, 7);
+  EXPECT_EQ(b.scenes[0].output.xres, 20);
+  EXPECT_EQ(b.scenes[1].output.xres, 100) << "Format inside frame 7 is restored at FrameEnd";
+  EXPECT_EQ(b.scenes[1].output.display_name, "ri.tif");
+}
+
+TEST(SceneBuilder, FrameSelectionSkipsBuilding) {
+  Built b = build("FrameBegin 1 WorldBegin WorldEnd FrameEnd FrameBegin 2 WorldBegin WorldEnd FrameEnd",
+                  [](int f) { return f == 2; });
+  ASSERT_EQ(b.scenes.size(), 1u);
+  EXPECT_EQ(b.scenes[0].output.frame_number, 2);
+}
+
+TEST(SceneBuilder, ErrorsFailOnlyTheirFrame) {
+  Built b = build(R"(FrameBegin 1 WorldBegin Sphere 1 -1 1 360 WorldEnd FrameEnd
+FrameBegin 2 WorldBegin Curves "cubic" [5] "nonperiodic" "P" [0 0 0 1 1 1 2 2 2 3 3 3 4 4 4] WorldEnd FrameEnd
+FrameBegin 3 WorldBegin Sphere 1 -1 1 360 WorldEnd FrameEnd)");
+  ASSERT_EQ(b.scenes.size(), 2u);
+  EXPECT_EQ(b.scenes[0].output.frame_number, 1);
+  EXPECT_EQ(b.scenes[1].output.frame_number, 3);
+  ASSERT_EQ(b.failed, std::vector<int>{2});
+  bool located = false;
+  for (const Diagnostic& d : b.diagnostics)
+    if (d.severity == Severity::Error && d.loc.line == 2) located = true;
+  EXPECT_TRUE(located) << "the Bézier count error points at line 2";
+}
+
+TEST(SceneBuilder, ObjectInstancesReplayTheirGeometry) {
+  Built b = build(R"(WorldBegin
+ObjectBegin "blade" Curves "linear" [2] "nonperiodic" "P" [0 0 0 0 1 0] "constantwidth" 0.1 ObjectEnd
+Translate 1 0 0 ObjectInstance "blade"
+Translate 1 0 0 ObjectInstance "blade"
+WorldEnd)");
+  ASSERT_EQ(b.scenes.size(), 1u);
+  const CurveSet& cs = b.scenes[0].curves;
+  ASSERT_EQ(cs.size(), 2u);
+  EXPECT_NEAR(cs.cp[0].x, 1.0f, 1e-6f);
+  EXPECT_NEAR(cs.cp[4].x, 2.0f, 1e-6f);
+  EXPECT_EQ(strands(cs).size(), 2u) << "each instance is its own strand";
+}
+
+TEST(SceneBuilder, MotionBlocksUseTheFirstSample) {
+  Built b = build(R"(WorldBegin
+MotionBegin [0 1] Translate 1 0 0 Translate 5 0 0 MotionEnd
+Sphere 1 -1 1 360
+WorldEnd)");
+  ASSERT_EQ(b.scenes.size(), 1u);
+  ASSERT_EQ(b.scenes[0].spheres.size(), 1u);
+  EXPECT_NEAR(b.scenes[0].spheres[0].bounds().center().x, 1.0f, 1e-4f);
+}
+
+TEST(SceneBuilder, LightsFollowIlluminateAndAttributeScopes) {
+  Built b = build(R"(LightSource "distantlight" "key"
+WorldBegin
+LightSource "pointlight" 2 "from" [0 5 0]
+AttributeBegin
+  LightSource "ambientlight" 3
+  Illuminate "key" 0
+  Sphere 1 -1 1 360
+AttributeEnd
+Sphere 1 -1 1 360
+WorldEnd)");
+  ASSERT_EQ(b.scenes.size(), 1u);
+  const Scene& s = b.scenes[0];
+  ASSERT_EQ(s.lights.size(), 3u);
+  EXPECT_EQ(s.lights[0].shader, "distantlight") << "a light before WorldBegin becomes a world light";
+  auto on = [&](uint32_t sphere) {
+    std::set<std::string> names;
+    for (uint32_t l : s.materials[s.sphere_material[sphere]].lights) names.insert(s.lights[l].shader);
+    return names;
+  };
+  EXPECT_EQ(on(0), (std::set<std::string>{"pointlight", "ambientlight"}));
+  EXPECT_EQ(on(1), (std::set<std::string>{"distantlight", "pointlight"})) << "AttributeEnd restores the light set";
+}
+
+TEST(SceneBuilder, OrientationAndHandednessDecideNormalFlips) {
+  Built b = build(R"(WorldBegin
+Sphere 1 -1 1 360
+Scale -1 1 1 Sphere 1 -1 1 360
+ReverseOrientation Sphere 1 -1 1 360
+WorldEnd)");
+  ASSERT_EQ(b.scenes.size(), 1u);
+  const Scene& s = b.scenes[0];
+  EXPECT_FALSE(s.materials[s.sphere_material[0]].flip_normals);
+  EXPECT_TRUE(s.materials[s.sphere_material[1]].flip_normals) << "a mirror flips the coordinate system";
+  EXPECT_FALSE(s.materials[s.sphere_material[2]].flip_normals);
+}
+
+TEST(SceneBuilder, UnbalancedBlocksAreErrors) {
+  Built b = build("WorldBegin AttributeBegin Sphere 1 -1 1 360 WorldEnd");
+  EXPECT_TRUE(b.scenes.empty());
+  bool error = false;
+  for (const Diagnostic& d : b.diagnostics) error |= d.severity == Severity::Error;
+  EXPECT_TRUE(error);
+}
+
+}  // namespace
+}  // namespace darc

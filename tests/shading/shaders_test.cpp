@@ -1,0 +1,124 @@
+// The RI standard shaders and lights against their Appendix A formulas.
+#include "shading/lights.h"
+#include "shading/surface_shader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace darc {
+namespace {
+
+ParamList params(std::initializer_list<std::pair<const char*, std::vector<float>>> values) {
+  ParamList p;
+  for (auto& [name, v] : values) {
+    Param x;
+    x.name = name;
+    x.decl.type = v.size() == 3 ? ParamType::Color : ParamType::Float;
+    x.floats = v;
+    p.params.push_back(x);
+  }
+  return p;
+}
+
+LightDesc light(const std::string& shader, ParamList p) { return LightDesc{shader, std::move(p), Matrix4{}, {}}; }
+
+struct Fixture {
+  Diagnostics diag{[](const Diagnostic&) {}};
+  std::vector<std::unique_ptr<Light>> lights;
+  LightList list() const {
+    LightList l;
+    for (auto& x : lights) l.push_back(x.get());
+    return l;
+  }
+};
+
+ShadingPoint facing_up() {
+  // A surface at the origin with normal +y, seen from above.
+  return ShadingPoint{{0, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0.5f, 0.25f, 1.0f}, {1, 1, 1}};
+}
+
+TEST(Shaders, MatteIsLambertPlusAmbient) {
+  Fixture f;
+  // Distant light from 60 degrees off the normal: cos = 0.5.
+  float s = std::sin(std::numbers::pi_v<float> / 3), c = std::cos(std::numbers::pi_v<float> / 3);
+  f.lights = make_lights({light("distantlight", params({{"intensity", {2}}, {"from", {s, c, 0}}, {"to", {0, 0, 0}}})),
+                          light("ambientlight", params({{"intensity", {0.1f}}}))},
+                         f.diag);
+  auto matte = make_surface_shader("matte", params({{"Kd", {0.8f}}}), {}, f.diag);
+  ShadeResult r = matte->shade(facing_up(), f.list());
+  // Ci = Cs * (Ka * 0.1 + Kd * 2 * 0.5)
+  float k = 1.0f * 0.1f + 0.8f * 2.0f * 0.5f;
+  EXPECT_NEAR(r.Ci.x, 0.5f * k, 1e-5f);
+  EXPECT_NEAR(r.Ci.z, 1.0f * k, 1e-5f);
+  EXPECT_EQ(r.Oi, (Vec3f{1, 1, 1}));
+}
+
+TEST(Shaders, MatteFaceForwardsTheNormal) {
+  Fixture f;
+  f.lights = make_lights({light("distantlight", params({{"from", {0, 1, 0}}, {"to", {0, 0, 0}}}))}, f.diag);
+  auto matte = make_surface_shader("matte", {}, {}, f.diag);
+  ShadingPoint sp = facing_up();
+  sp.N = {0, -1, 0};  // the geometric normal points away from the viewer
+  EXPECT_NEAR(matte->shade(sp, f.list()).Ci.x, 0.5f, 1e-6f);
+}
+
+TEST(Shaders, PointLightFallsOffWithTheSquareOfTheDistance) {
+  Fixture f;
+  f.lights = make_lights({light("pointlight", params({{"intensity", {8}}, {"from", {0, 2, 0}}}))}, f.diag);
+  LightContribution lc;
+  ASSERT_TRUE(f.lights[0]->illuminate({0, 0, 0}, lc));
+  EXPECT_NEAR(lc.Cl.x, 2.0f, 1e-6f);
+  EXPECT_NEAR(lc.L.y, 1.0f, 1e-6f);
+}
+
+TEST(Shaders, SpotlightConeAndFalloff) {
+  Fixture f;
+  f.lights = make_lights({light("spotlight", params({{"from", {0, 1, 0}}, {"to", {0, 0, 0}}}))}, f.diag);
+  LightContribution lc;
+  ASSERT_TRUE(f.lights[0]->illuminate({0, 0, 0}, lc));
+  EXPECT_NEAR(lc.Cl.x, 1.0f, 1e-6f) << "on the axis: cos^2 = 1, distance 1, inside the cone";
+  EXPECT_FALSE(f.lights[0]->illuminate({1, 0, 0}, lc)) << "45 degrees is outside the 30 degree cone";
+}
+
+TEST(Shaders, PlasticHighlightPeaksAtTheMirrorDirection) {
+  Fixture f;
+  f.lights = make_lights({light("distantlight", params({{"from", {0, 1, 0}}, {"to", {0, 0, 0}}}))}, f.diag);
+  auto plastic = make_surface_shader("plastic", params({{"Ka", {0}}, {"Kd", {0}}}), {}, f.diag);
+  ShadeResult r = plastic->shade(facing_up(), f.list());
+  EXPECT_NEAR(r.Ci.x, 0.5f, 1e-5f) << "Ks * specularcolor * (N.H)^(1/roughness) with N.H = 1";
+  ShadingPoint off = facing_up();
+  off.I = normalize(Vec3f{1, -1, 0});
+  // Viewed 45 degrees off the normal, H is 22.5 degrees off it.
+  float expected = 0.5f * std::pow(std::cos(std::numbers::pi_v<float> / 8), 1.0f / 0.1f);
+  EXPECT_NEAR(plastic->shade(off, f.list()).Ci.x, expected, 1e-4f);
+}
+
+TEST(Shaders, ConstantAndDefaultSurfaceNeedNoLights) {
+  Fixture f;
+  auto constant = make_surface_shader("constant", {}, {}, f.diag);
+  ShadingPoint sp = facing_up();
+  sp.Os = {0.5f, 0.5f, 0.5f};
+  ShadeResult r = constant->shade(sp, {});
+  EXPECT_NEAR(r.Ci.x, 0.25f, 1e-6f) << "Ci = Os * Cs";
+  auto def = make_surface_shader("defaultsurface", {}, {}, f.diag);
+  EXPECT_NEAR(def->shade(facing_up(), {}).Ci.x, 0.5f, 1e-6f) << "head-on: Ka + Kd = 1";
+}
+
+TEST(Shaders, UnknownNamesWarnOnceAndFallBack) {
+  int warnings = 0;
+  Diagnostics diag([&](const Diagnostic& d) { warnings += d.severity == Severity::Warning; });
+  auto a = make_surface_shader("show_st", {}, {}, diag);
+  auto b = make_surface_shader("show_st", {}, {}, diag);
+  EXPECT_EQ(warnings, 1);
+  EXPECT_NEAR(a->shade(facing_up(), {}).Ci.x, 0.5f, 1e-6f) << "defaultsurface";
+  auto lights = make_lights({light("shadowspot", params({{"from", {0, 1, 0}}, {"to", {0, 0, 0}}, {"coneangle", {0.5f}}}))},
+                            diag);
+  EXPECT_EQ(warnings, 2);
+  LightContribution lc;
+  EXPECT_TRUE(lights[0]->illuminate({0, 0, 0}, lc)) << "falls back to a spotlight";
+}
+
+}  // namespace
+}  // namespace darc
