@@ -28,7 +28,13 @@ SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, Ray
     SurfaceInteraction hit;
     if (!ctx.tracer.nearest_hit(ray, hit, counters, mailbox)) break;
     if (layer == 0) out.depth = hit.t;
-    ShadingPoint sp{hit.P, hit.N, ray.d, hit.Cs, hit.Os};
+    ShadingPoint sp;
+    sp.P = hit.P;
+    sp.N = hit.N;
+    sp.I = ray.d;
+    sp.Cs = hit.Cs;
+    sp.Os = hit.Os;
+    sp.dPdv = hit.tangent;
     ShadeResult r = ctx.shading.surface(hit.material).shade(sp, ctx.shading.lights(hit.material));
     out.color += mul(transmittance, r.Ci);
     transmittance = mul(transmittance, Vec3f{1, 1, 1} - r.Oi);

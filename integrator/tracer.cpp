@@ -48,6 +48,7 @@ bool Tracer::nearest_hit(const Ray& ray_in, SurfaceInteraction& out, RayCounters
           out.is_curve = true;
           out.u = h.u;
           out.v = h.v;
+          out.tangent = h.tangent;
           ray.tmax = h.t;
           found = true;
           break;
@@ -71,6 +72,7 @@ bool Tracer::nearest_hit(const Ray& ray_in, SurfaceInteraction& out, RayCounters
           out.material = mi;
           out.primitive = p;
           out.is_curve = false;
+          out.tangent = {};
           out.u = h.u;
           out.v = h.v;
           ray.tmax = h.t;

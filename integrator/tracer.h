@@ -19,6 +19,7 @@ struct SurfaceInteraction {
   uint32_t primitive = 0;  // grid primitive index
   bool is_curve = false;
   float u = 0, v = 0;
+  Vec3f tangent;  // unit, along the curve (zero on surfaces)
 };
 
 class Tracer {

@@ -12,6 +12,7 @@ struct ShadingPoint {
   Vec3f Cs;   // surface colour
   Vec3f Os;   // surface opacity
   float s = 0, t = 0;
+  Vec3f dPdv;  // unit tangent along a curve (RIB v); zero on surfaces
 };
 
 // faceforward(N, I): N flipped to face against I.

@@ -99,6 +99,42 @@ class MetalSurface : public SurfaceShader {
   float ka_, ks_, roughness_;
 };
 
+// A hair shader in the manner of PRMan application note 19 (Kajiya & Kay 1989): diffuse from the
+// sine between the strand tangent and the light, a specular cone around the tangent. Colour
+// comes from Cs (give Cs per vertex for a root-to-tip gradient). On surfaces (no tangent) it
+// shades like plastic.
+class HairSurface : public SurfaceShader {
+ public:
+  explicit HairSurface(const ParamList& p)
+      : ka_(p.get_float("Ka", 1)), kd_(p.get_float("Kd", 0.6f)), ks_(p.get_float("Ks", 0.35f)),
+        roughness_(p.get_float("roughness", 0.15f)), specular_color_(param_color(p, "specularcolor", {1, 1, 1})) {}
+  ShadeResult shade(const ShadingPoint& sp, const LightList& lights) const override {
+    Vec3f T = normalize(sp.dPdv);
+    if (length_squared(T) == 0.0f) {
+      PlasticSurface fallback(ParamList{});
+      return fallback.shade(sp, lights);
+    }
+    Vec3f V = -sp.I;
+    float cos_tv = dot(T, V), sin_tv = std::sqrt(std::max(0.0f, 1 - cos_tv * cos_tv));
+    float exponent = 1.0f / std::max(roughness_, 1e-4f);
+    Vec3f diff, spec;
+    LightContribution lc;
+    for (const Light* l : lights) {
+      if (!l->illuminate(sp.P, lc) || lc.ambient) continue;
+      float cos_tl = dot(T, lc.L), sin_tl = std::sqrt(std::max(0.0f, 1 - cos_tl * cos_tl));
+      diff += lc.Cl * sin_tl;
+      float cone = cos_tl * cos_tv + sin_tl * sin_tv;
+      if (cone > 0) spec += lc.Cl * std::pow(cone, exponent);
+    }
+    Vec3f c = mul(sp.Cs, ambient(sp, lights) * ka_ + diff * kd_) + mul(specular_color_, spec * ks_);
+    return {mul(sp.Os, c), sp.Os};
+  }
+
+ private:
+  float ka_, kd_, ks_, roughness_;
+  Vec3f specular_color_;
+};
+
 // PRMan/Aqsis defaultsurface: a headlight look that shows geometry without any light:
 // Ci = Os * Cs * (Ka + Kd * (N.I)^2) with Ka = 0.2, Kd = 0.8.
 class DefaultSurface : public SurfaceShader {
@@ -127,6 +163,7 @@ std::unique_ptr<SurfaceShader> make_surface_shader(const std::string& name, cons
   if (name == "matte") return std::make_unique<MatteSurface>(params);
   if (name == "plastic" || name == "paintedplastic") return std::make_unique<PlasticSurface>(params);
   if (name == "metal" || name == "shinymetal") return std::make_unique<MetalSurface>(params);
+  if (name == "hair") return std::make_unique<HairSurface>(params);
   if (name != "defaultsurface")
     diag.warning_once("surface:" + name, loc, "Surface", "unknown surface shader \"" + name + "\": using defaultsurface");
   return std::make_unique<DefaultSurface>();

@@ -30,7 +30,7 @@ class SurfaceShader {
 // Makes the shader for a RIB Surface call. Unknown names get one warning each and
 // "defaultsurface" (documented in README). Known names: constant, matte, plastic, metal,
 // shinymetal (= metal: no environment maps), paintedplastic (= plastic: no textures),
-// defaultsurface.
+// hair (Kajiya-Kay, PRMan application note 19 parameters), defaultsurface.
 std::unique_ptr<SurfaceShader> make_surface_shader(const std::string& name, const ParamList& params,
                                                    const SourceLoc& loc, Diagnostics& diag);
 

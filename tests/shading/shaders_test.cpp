@@ -36,7 +36,12 @@ struct Fixture {
 
 ShadingPoint facing_up() {
   // A surface at the origin with normal +y, seen from above.
-  return ShadingPoint{{0, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0.5f, 0.25f, 1.0f}, {1, 1, 1}};
+  ShadingPoint sp;
+  sp.N = {0, 1, 0};
+  sp.I = {0, -1, 0};
+  sp.Cs = {0.5f, 0.25f, 1.0f};
+  sp.Os = {1, 1, 1};
+  return sp;
 }
 
 TEST(Shaders, MatteIsLambertPlusAmbient) {
@@ -93,6 +98,17 @@ TEST(Shaders, PlasticHighlightPeaksAtTheMirrorDirection) {
   // Viewed 45 degrees off the normal, H is 22.5 degrees off it.
   float expected = 0.5f * std::pow(std::cos(std::numbers::pi_v<float> / 8), 1.0f / 0.1f);
   EXPECT_NEAR(plastic->shade(off, f.list()).Ci.x, expected, 1e-4f);
+}
+
+TEST(Shaders, HairIsKajiyaKayAroundTheTangent) {
+  Fixture f;
+  f.lights = make_lights({light("distantlight", params({{"from", {0, 1, 0}}, {"to", {0, 0, 0}}}))}, f.diag);
+  auto hair = make_surface_shader("hair", params({{"Ka", {0}}, {"Ks", {0}}}), {}, f.diag);
+  ShadingPoint sp = facing_up();
+  sp.dPdv = {1, 0, 0};  // light perpendicular to the strand: sin = 1
+  EXPECT_NEAR(hair->shade(sp, f.list()).Ci.x, 0.5f * 0.6f, 1e-5f);
+  sp.dPdv = normalize(Vec3f{1, 1, 0});  // 45 degrees: sin = 0.707
+  EXPECT_NEAR(hair->shade(sp, f.list()).Ci.x, 0.5f * 0.6f * std::sqrt(0.5f), 1e-5f);
 }
 
 TEST(Shaders, ConstantAndDefaultSurfaceNeedNoLights) {
