@@ -102,7 +102,7 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
             if (m.flip_normals) n = -n;
             if (dot(n, ray.d) > 0) break;
           }
-          abuffer.add(Fragment{h.t, h.coverage, cs.strand_id[local], p, h.u}, shade);
+          abuffer.add(Fragment{h.t, h.coverage, cs.strand_id[local], p, h.u, false, {}, {}}, shade);
           nearest = std::min(nearest, h.t);
           break;
         }
@@ -117,7 +117,7 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
           const Material& m = scene.materials[mi];
           Vec3f n = m.flip_normals ? -h.ng : h.ng;
           if (m.sides == 1 && dot(n, ray.d) > 0) break;
-          abuffer.add(Fragment{h.t, 1.0f, kNoStrand, p, 0}, shade);
+          abuffer.add(Fragment{h.t, 1.0f, kNoStrand, p, 0, false, {}, {}}, shade);
           nearest = std::min(nearest, h.t);
           // Nothing behind an opaque surface can be seen.
           if (m.opacity == Vec3f{1, 1, 1}) ray.tmax = std::min(ray.tmax, h.t);
