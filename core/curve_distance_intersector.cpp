@@ -112,6 +112,29 @@ bool unit_2d(const Vec3f& v, float min_length, float& x, float& y) {
   return true;
 }
 
+// A leaf seen end-on (its projected chord a point) is what the exact intersector sees of a
+// ribbon facing the ray along its length: a disc of radius hw around the point (x, y). Its
+// coverage is that of the square of equal area, the product of two perpendicular bands; exact
+// for small discs under the square and box footprints (the disc form overestimates them by 4/pi).
+float end_on_coverage(const DistanceState& s, const FootprintAt& f, float x, float y, float hw) {
+  if (f.binary) return x * x + y * y <= hw * hw ? 1.0f : 0.0f;
+  float equal_area_half_side = 0.5f * std::sqrt(std::numbers::pi_v<float>) * hw;
+  return band_coverage(s, f, std::abs(y), equal_area_half_side, 1.0f, 0.0f) *
+         band_coverage(s, f, std::abs(x), equal_area_half_side, 0.0f, 1.0f);
+}
+
+// The fraction of the footprint on the strand's side of both ends, from the fractions fs and fe
+// on the strand's side of each. Ends facing each other (a short strand, into-strand directions
+// opposite) cut a slab out of the footprint: fs + fe - 1, not the product fs * fe, which would
+// let a strand much shorter than the footprint cover it as if it were long. Perpendicular ends
+// keep the product (exact for a square footprint along them); ends facing the same way give
+// min(fs, fe). Between these, blend by the cosine of the angle.
+float both_ends_falloff(float fs, float fe, float cos_angle) {
+  float product = fs * fe;
+  if (cos_angle < 0.0f) return -cos_angle * std::max(0.0f, fs + fe - 1.0f) + (1.0f + cos_angle) * product;
+  return cos_angle * std::min(fs, fe) + (1.0f - cos_angle) * product;
+}
+
 struct EndFalloff {
   bool start = false, end = false;
   Vec3f start_point, end_point;  // ray space
@@ -127,9 +150,9 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
   // The closest approach of the ray to the leaf's chord, clamped to the leaf: no end
   // half-plane tests here, since a strand beside the footprint covers it whichever leaf
   // reports it (the best leaf per segment wins, the best segment per strand in the A-buffer).
-  float w = chord_length2 <= point_chord * point_chord
-                ? (cp[0].z <= cp[3].z ? 0.0f : 1.0f)
-                : std::clamp((-cp[0].x * chord_x - cp[0].y * chord_y) / chord_length2, 0.0f, 1.0f);
+  const bool end_on = chord_length2 <= point_chord * point_chord;
+  float w = end_on ? (cp[0].z <= cp[3].z ? 0.0f : 1.0f)
+                   : std::clamp((-cp[0].x * chord_x - cp[0].y * chord_y) / chord_length2, 0.0f, 1.0f);
   float u = std::clamp(u0 + (u1 - u0) * w, u0, u1);
   float half_width = 0.5f * bezier_evaluate(width, w) * orientation_scale(s, u);
   if (!(half_width > 0.0f)) return;
@@ -143,13 +166,17 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
     tx = 1.0f;
     ty = 0.0f;
   }
-  float coverage = band_coverage(s, f, d, half_width, tx, ty);
+  float coverage = end_on ? end_on_coverage(s, f, pc.x, pc.y, half_width) : band_coverage(s, f, d, half_width, tx, ty);
+  float fs = 1.0f, fe = 1.0f;
   if (ends.start)
-    coverage *= end_falloff(s, f, -(ends.start_point.x * ends.start_tx + ends.start_point.y * ends.start_ty),
-                            ends.start_tx, ends.start_ty);
+    fs = end_falloff(s, f, -(ends.start_point.x * ends.start_tx + ends.start_point.y * ends.start_ty), ends.start_tx,
+                     ends.start_ty);
   if (ends.end)
-    coverage *= end_falloff(s, f, -(ends.end_point.x * ends.end_tx + ends.end_point.y * ends.end_ty), ends.end_tx,
-                            ends.end_ty);
+    fe = end_falloff(s, f, -(ends.end_point.x * ends.end_tx + ends.end_point.y * ends.end_ty), ends.end_tx,
+                     ends.end_ty);
+  coverage *= ends.start && ends.end
+                  ? both_ends_falloff(fs, fe, ends.start_tx * ends.end_tx + ends.start_ty * ends.end_ty)
+                  : fs * fe;
   if (!(coverage > 0.0f)) return;
   if (coverage > s.coverage || (coverage == s.coverage && t < s.t)) {
     s.found = true;
@@ -186,6 +213,14 @@ void distance_recursive(const Vec3f cp[4], const float width[4], float u0, float
     if (!bound_overlaps_ray(sub_cp, margin, s.t_min * s.ray_length, s.t_max * s.ray_length)) continue;
     distance_recursive(sub_cp, sub_width, half == 0 ? u0 : u_mid, half == 0 ? u_mid : u1, depth - 1, ends, s);
   }
+}
+
+// An end's half-plane only bounds the strand near the end: a curved segment can come back
+// across the end's line far from it (a loop, a Catmull-Rom swing), where it must not be cut.
+// Where the end is out of the footprint's reach, the footprint is wholly on one side of the
+// end's line for a straight strand anyway, so skipping the fall-off there changes nothing.
+bool end_within_reach(const Vec3f& end, float half_width, const DistanceState& s) {
+  return std::hypot(end.x, end.y) <= half_width + s.reach_at_depth(end.z + half_width);
 }
 
 bool finite3(const Vec3f& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -253,13 +288,13 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Ray& 
   if (ends.strand_start) {
     Vec3f d0 = ray_cp[1] - ray_cp[0];
     if (length_squared(d0) == 0.0f) d0 = ray_cp[2] - ray_cp[0];
-    fall.start = unit_2d(d0, min_tangent, fall.start_tx, fall.start_ty);
+    fall.start = unit_2d(d0, min_tangent, fall.start_tx, fall.start_ty) && end_within_reach(ray_cp[0], hw, s);
     fall.start_point = ray_cp[0];
   }
   if (ends.strand_end) {
     Vec3f d1 = ray_cp[2] - ray_cp[3];
     if (length_squared(d1) == 0.0f) d1 = ray_cp[1] - ray_cp[3];
-    fall.end = unit_2d(d1, min_tangent, fall.end_tx, fall.end_ty);
+    fall.end = unit_2d(d1, min_tangent, fall.end_tx, fall.end_ty) && end_within_reach(ray_cp[3], hw, s);
     fall.end_point = ray_cp[3];
   }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <vector>
 
@@ -47,8 +48,8 @@ class ABuffer {
   }
 
   // Adds a fragment; a strand already in the list keeps its larger coverage (one fragment per
-  // strand per ray), a strand already composited is ignored. `shade` is used when the list is
-  // full and two fragments must be merged.
+  // strand per ray), a strand already composited or merged at the cap is ignored. `shade` is
+  // used when the list is full and two fragments must be merged.
   template <class Shade>
   void add(const Fragment& f, Shade&& shade) {
     if (f.strand != kNoStrand) {
@@ -111,6 +112,10 @@ class ABuffer {
     Fragment& near = pending_[pending_.size() - 2];
     const Fragment& far = pending_.back();
     ShadedFragment a = weighted(near, shade), b = weighted(far, shade);
+    // Both strands now live in a preshaded fragment that dedupe cannot update: close them, or
+    // another segment of either strand would add its coverage a second time.
+    for (uint32_t strand : {near.strand, far.strand})
+      if (strand != kNoStrand) finished_strands_.push_back(strand);
     Fragment m = near;
     m.preshaded = true;
     m.color = a.Ci + mul(Vec3f{1, 1, 1} - a.Oi, b.Ci);
