@@ -1,5 +1,6 @@
 #include "integrator/distance_hider.h"
 
+#include "core/curve_basis.h"
 #include "core/footprint_traversal.h"
 #include "shading/shading_point.h"
 
@@ -70,6 +71,9 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
       }
       sp.Cs = bezier(&cs.cs[4 * local], f.u);
       sp.Os = bezier(&cs.os[4 * local], f.u);
+      const Vec3f* cp = cs.control_points(local);
+      sp.dPdv = normalize(bezier_derivative(cp, f.u));
+      if (length_squared(sp.dPdv) == 0.0f) sp.dPdv = normalize(cp[3] - cp[0]);
     } else {
       SurfaceHit h;
       Ray r = camera_ray;
