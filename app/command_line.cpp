@@ -2,10 +2,39 @@
 
 #include <CLI/CLI.hpp>
 
-#include <cstdio>
-#include <iostream>
+#include <charconv>
+#include <string>
+#include <string_view>
 
 namespace darc {
+
+namespace {
+
+// Largest --res side we accept: far beyond any film we render, small enough that W*H pixels of
+// RGBA float stay addressable.
+constexpr int kMaxResolution = 16384;
+
+// Parses a positive integer that fills `text` exactly (no sign, spaces or trailing characters).
+bool parse_positive_int(std::string_view text, int& value) {
+  if (text.empty() || text.front() < '0' || text.front() > '9') return false;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return ec == std::errc() && end == text.data() + text.size() && value >= 1;
+}
+
+// "WxH" (or "WXH") with both sides in [1, kMaxResolution]; anything else ("10", "10x",
+// "10x10junk", " 10x10") is rejected rather than half-read.
+bool parse_resolution(std::string_view text, int& width, int& height) {
+  const size_t x = text.find_first_of("xX");
+  if (x == std::string_view::npos) return false;
+  int w = 0, h = 0;
+  if (!parse_positive_int(text.substr(0, x), w) || !parse_positive_int(text.substr(x + 1), h)) return false;
+  if (w > kMaxResolution || h > kMaxResolution) return false;
+  width = w;
+  height = h;
+  return true;
+}
+
+}  // namespace
 
 AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_code) {
   AppOptions o;
@@ -31,17 +60,14 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
   app.add_flag("-q,--quiet", o.quiet, "no progress output");
   app.add_flag("--progress", o.progress, "progress output even when not wanted by default");
   app.add_flag("--cat", o.cat, "print the parsed RIB (canonical form) instead of rendering");
-  app.add_option("--ocio-config", o.ocio_config, "OpenColorIO config for 8-bit outputs (default: $OCIO, else built in)");
+  app.add_option("--ocio-config", o.ocio_config,
+                 "OpenColorIO config for 8-bit outputs (default: $OCIO, else built in)");
   try {
     app.parse(argc, argv);
     if (!res.empty()) {
-      int w = 0, h = 0;
-      char x = 0;
-      if (std::sscanf(res.c_str(), "%d%c%d", &w, &x, &h) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
-          w > 16384 || h > 16384)
-        throw CLI::ValidationError("--res", "expected WxH with 1 <= W, H <= 16384, found \"" + res + "\"");
-      o.xres = w;
-      o.yres = h;
+      if (!parse_resolution(res, o.xres, o.yres))
+        throw CLI::ValidationError(
+            "--res", "expected WxH with 1 <= W, H <= " + std::to_string(kMaxResolution) + ", found \"" + res + "\"");
     }
     if (!frames.empty()) {
       std::string error;

@@ -16,7 +16,8 @@ class ProgressReporter {
  private:
   bool enabled_, terminal_;
   std::string label_;
-  int last_step_ = -1;
+  int last_step_ = -1;         // last 10 % step logged (non-terminal output)
+  double best_fraction_ = -1;  // largest fraction reported so far this frame
   std::chrono::steady_clock::time_point start_;
 };
 

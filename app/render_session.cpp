@@ -45,7 +45,8 @@ bool has_image_extension(const std::string& name) {
 std::string output_path(const AppOptions& o, const OutputSettings& out) {
   std::string name = o.output.empty() ? out.display_name : o.output;
   name = substitute_frame_number(name, out.frame_number);
-  if (!has_image_extension(name)) name += (out.display_type == "openexr" || out.display_type == "exr") ? ".exr" : ".tif";
+  if (!has_image_extension(name))
+    name += (out.display_type == "openexr" || out.display_type == "exr") ? ".exr" : ".tif";
   return name;
 }
 
@@ -66,8 +67,16 @@ nlohmann::json counters_json(const RayCounters& c) {
 int run_render_session(const AppOptions& o) {
   Diagnostics diag;
   for (const std::string& in : o.inputs) {
-    if (in != "-" && !fs::exists(in)) {
+    if (in == "-") continue;
+    std::error_code ec;
+    const fs::file_status status = fs::status(in, ec);
+    if (!fs::exists(status)) {
       std::fprintf(stderr, "darc: input file \"%s\" does not exist\n", in.c_str());
+      return kExitUsage;
+    }
+    // A directory opens as a stream that reads nothing, which would render nothing silently.
+    if (fs::is_directory(status)) {
+      std::fprintf(stderr, "darc: input \"%s\" is a directory, not a RIB file\n", in.c_str());
       return kExitUsage;
     }
   }
@@ -92,14 +101,21 @@ int run_render_session(const AppOptions& o) {
   Clock::time_point segment_start = Clock::now();
 
   SceneBuilder::Callbacks cb;
-  if (o.frames) cb.frame_selected = [&](int f) { return o.frames->contains(f); };
+  int frames_seen = 0;  // frames --frames selected (rendered, skipped as existing or failed)
+  if (o.frames)
+    cb.frame_selected = [&](int f) {
+      const bool selected = o.frames->contains(f);
+      if (selected) ++frames_seen;
+      return selected;
+    };
   cb.frame_failed = [&](int) { segment_start = Clock::now(); };
   cb.frame_ready = [&](Scene&& scene) {
     FrameStats stats;
     stats.parse_seconds = seconds_since(segment_start);
     const std::string path = output_path(o, scene.output);
     if (o.skip_existing && fs::exists(path) && image_file_is_readable(path)) {
-      if (!o.quiet) std::fprintf(stderr, "darc: %s exists: frame %d skipped\n", path.c_str(), scene.output.frame_number);
+      if (!o.quiet)
+        std::fprintf(stderr, "darc: %s exists: frame %d skipped\n", path.c_str(), scene.output.frame_number);
       segment_start = Clock::now();
       return;
     }
@@ -167,6 +183,8 @@ int run_render_session(const AppOptions& o) {
     parser.parse_file(in);
   }
   builder.finish(SourceLoc{});
+  if (o.frames && frames_seen == 0)
+    std::fprintf(stderr, "darc: warning: --frames selected none of the frames in the input\n");
 
   if (!o.stats_path.empty()) {
     std::ofstream f(o.stats_path);
