@@ -50,7 +50,7 @@ Image render_frame(const Scene& scene, const RenderOptions& options, Diagnostics
   std::vector<PixelRect> tiles = film.tiles();
   std::vector<std::optional<TileAccumulator>> accumulators(tiles.size());
   std::vector<RayCounters> counters(tiles.size());
-  std::atomic<size_t> done{0};
+  size_t done = 0;
   std::mutex progress_mutex;
 
   int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
@@ -63,10 +63,10 @@ Image render_frame(const Scene& scene, const RenderOptions& options, Diagnostics
           render_tile_distance(*distance, tiles[i], *accumulators[i], counters[i]);
         else
           render_tile_stochastic(ctx, tiles[i], *accumulators[i], counters[i]);
-        size_t n = ++done;
         if (options.progress) {
+          // Counted under the lock so that reports arrive in increasing order.
           std::lock_guard lock(progress_mutex);
-          options.progress(double(n) / double(tiles.size()));
+          options.progress(double(++done) / double(tiles.size()));
         }
       }
     });

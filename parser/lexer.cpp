@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -253,6 +254,11 @@ bool read_rib_text(const std::string& path, std::string& text, std::string& erro
   if (path == "-") {
     text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
     return true;
+  }
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    error = "is a directory";
+    return false;
   }
   const bool gzipped = path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
   if (gzipped) {
