@@ -5,8 +5,12 @@
 // the A-buffer composites per mask point with the scalar spread over the fragment's points.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace darc {
 
@@ -52,6 +56,34 @@ inline CoverageMask half_plane_mask(const FootprintSquare& sq, float ex, float e
     for (int i = 0; i < kMaskSide; ++i, s += ati)
       if (s >= 0.0f) m |= CoverageMask{1} << (j * kMaskSide + i);
   }
+  return m;
+}
+
+// The `count` points of the square nearest to a strand, among the `allowed` ones: nearest to
+// the axis line through c with unit normal n (a band), or to the point c itself when `point`
+// is set (a strand seen end-on). Choosing the mask by count rather than by a width threshold
+// makes its size match the exact coverage to 1/64, so fragments in the same place share points
+// (they occlude each other) and fragments side by side do not (they add up). Ties go to the
+// lower point index, so masks are deterministic.
+inline CoverageMask nearest_points_mask(const FootprintSquare& sq, float cx, float cy, float nx, float ny, bool point,
+                                        int count, CoverageMask allowed) {
+  constexpr int kPoints = kMaskSide * kMaskSide;
+  count = std::clamp(count, 0, kPoints);
+  if (count == 0) return 0;
+  std::array<std::pair<float, int>, kPoints> key;
+  const float step = 1.0f / kMaskSide;
+  for (int j = 0; j < kMaskSide; ++j)
+    for (int i = 0; i < kMaskSide; ++i) {
+      float u = (float(i) + 0.5f) * step - 0.5f, v = (float(j) + 0.5f) * step - 0.5f;
+      float px = u * sq.ax_x + v * sq.ay_x - cx, py = u * sq.ax_y + v * sq.ay_y - cy;
+      int b = j * kMaskSide + i;
+      float d = point ? px * px + py * py : std::abs(px * nx + py * ny);
+      key[b] = {(allowed >> b) & 1 ? d : std::numeric_limits<float>::infinity(), b};
+    }
+  std::partial_sort(key.begin(), key.begin() + count, key.end());
+  CoverageMask m = 0;
+  for (int k = 0; k < count; ++k)
+    if (std::isfinite(key[k].first)) m |= CoverageMask{1} << key[k].second;
   return m;
 }
 

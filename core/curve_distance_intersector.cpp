@@ -37,9 +37,11 @@ struct DistanceState {
   bool oriented;
   Vec3f normal0, normal1, dir;
   float reach0, reach1;  // footprint reach = reach0 + reach1 * t
-  // Best fragment so far.
+  // Best fragment so far, and the geometry its coverage mask needs.
   bool found = false;
   float coverage = 0, t = 0, u = 0, distance = 0;
+  float px = 0, py = 0, tx = 1, ty = 0, half_width = 0;
+  bool end_on = false;
 
   float reach_at_depth(float z) const { return reach0 + reach1 * std::max(0.0f, z / ray_length); }
 
@@ -184,7 +186,27 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
     s.t = t;
     s.u = u;
     s.distance = d;
+    s.px = pc.x;
+    s.py = pc.y;
+    s.tx = tx;
+    s.ty = ty;
+    s.half_width = half_width;
+    s.end_on = end_on;
   }
+}
+
+// Where in the footprint the best leaf's strand lies: the points nearest to it, as many as its
+// coverage is worth, on the strand's side of its ends within reach.
+CoverageMask fragment_mask(const DistanceState& s, const EndFalloff& ends) {
+  FootprintAt f = s.footprint_at(s.t);
+  if (f.binary) return kFullMask;
+  FootprintSquare sq{f.ax_x, f.ax_y, f.ay_x, f.ay_y};
+  CoverageMask allowed = kFullMask;
+  if (ends.start) allowed &= half_plane_mask(sq, ends.start_point.x, ends.start_point.y, ends.start_tx, ends.start_ty);
+  if (ends.end) allowed &= half_plane_mask(sq, ends.end_point.x, ends.end_point.y, ends.end_tx, ends.end_ty);
+  constexpr int kPoints = kMaskSide * kMaskSide;
+  int count = std::max(1, int(std::lround(s.coverage * kPoints)));
+  return nearest_points_mask(sq, s.px, s.py, -s.ty, s.tx, s.end_on, count, allowed);
 }
 
 float half_max_width(const float width[4]) {
@@ -243,7 +265,7 @@ SegmentEnds segment_ends(const CurveSet& set, size_t i) {
 }
 
 bool intersect_segment_distance(const CurveSet& set, size_t segment, const Ray& ray, const RayFootprint& footprint,
-                                CoverageModel model, SegmentEnds ends, CurveFragmentHit& hit) {
+                                CoverageModel model, SegmentEnds ends, CurveFragmentHit& hit, bool compute_mask) {
   const Vec3f* cp = set.control_points(segment);
   const float* width = set.widths(segment);
   float hw = half_max_width(width);
@@ -308,6 +330,7 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Ray& 
   hit.coverage = std::min(s.coverage, 1.0f);
   hit.u = s.u;
   hit.distance = s.distance;
+  hit.mask = compute_mask ? fragment_mask(s, fall) : kFullMask;
   return true;
 }
 

@@ -7,6 +7,7 @@
 #include <cstddef>
 
 #include "core/coverage.h"
+#include "core/coverage_mask.h"
 #include "core/curve_set.h"
 #include "core/ray.h"
 #include "core/ray_footprint.h"
@@ -18,6 +19,7 @@ struct CurveFragmentHit {
   float coverage = 0;  // fraction of the footprint covered, in (0, 1]
   float u = 0;         // along the segment
   float distance = 0;  // from the ray to the strand axis, across the ray
+  CoverageMask mask = kFullMask;  // where in the footprint the strand lies (when asked for)
 };
 
 // Which ends of a segment are ends of its strand: strand ends get a coverage fall-off along the
@@ -31,7 +33,8 @@ struct SegmentEnds {
 // t in (ray.tmin, ray.tmax) and coverage above zero. Returns false when nothing of the footprint
 // is covered, for hidden (width <= 0) parts, and for non-finite rays.
 bool intersect_segment_distance(const CurveSet& set, size_t segment, const Ray& ray, const RayFootprint& footprint,
-                                CoverageModel model, SegmentEnds ends, CurveFragmentHit& hit);
+                                CoverageModel model, SegmentEnds ends, CurveFragmentHit& hit,
+                                bool compute_mask = false);
 
 // The strand ends of segment i of `set` (from strand ids and segment indices).
 SegmentEnds segment_ends(const CurveSet& set, size_t i);

@@ -3,9 +3,11 @@
 // once they are final (no later traversal step can put anything in front of them).
 #pragma once
 
+#include "core/coverage_mask.h"
 #include "core/vec.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
@@ -25,6 +27,8 @@ struct Fragment {
   // then already shaded and weighted by coverage.
   bool preshaded = false;
   Vec3f color, opacity;
+  // Where in the footprint the fragment lies (8 x 8 points); the scalar coverage says how much.
+  CoverageMask mask = kFullMask;
 };
 
 struct ShadedFragment {
@@ -42,7 +46,7 @@ class ABuffer {
     pending_.clear();
     finished_strands_.clear();
     color_ = {};
-    transmittance_ = {1, 1, 1};
+    point_transmittance_.fill(Vec3f{1, 1, 1});
     peak_ = 0;
     added_ = 0;
   }
@@ -80,7 +84,12 @@ class ABuffer {
   }
 
   const Vec3f& color() const { return color_; }
-  const Vec3f& transmittance() const { return transmittance_; }
+  // The mean transmittance over the footprint.
+  Vec3f transmittance() const {
+    Vec3f sum;
+    for (const Vec3f& t : point_transmittance_) sum += t;
+    return sum * (1.0f / kPoints);
+  }
   size_t peak_length() const { return peak_; }
   size_t fragments_added() const { return added_; }
 
@@ -99,11 +108,35 @@ class ABuffer {
     return {s.Ci * f.coverage, s.Oi * f.coverage};
   }
 
+  // Composites per footprint point: the fragment's coverage c is spread over its mask's k points
+  // (opacity c*64/k each, at most 1; any excess over the other points), so one fragment alone
+  // gives exactly c, while fragments in the same part of the footprint occlude each other and
+  // abutting ones add up (curve-ray-tracing.md §6 case 8). With full masks this is the scalar
+  // composite of the seed paper.
   template <class Shade>
   void composite(const Fragment& f, Shade& shade) {
-    ShadedFragment s = weighted(f, shade);
-    color_ += mul(transmittance_, s.Ci);
-    transmittance_ = mul(transmittance_, Vec3f{1, 1, 1} - s.Oi);
+    ShadedFragment s;
+    float in_mask = 1, out_mask = 1;
+    CoverageMask mask = kFullMask;
+    if (f.preshaded) {
+      s = {f.color, f.opacity};
+    } else {
+      s = shade(f);
+      mask = f.mask;
+      const float k = float(mask_count(mask)), c = std::clamp(f.coverage, 0.0f, 1.0f) * kPoints;
+      in_mask = k > 0 ? std::min(1.0f, c / k) : 0.0f;
+      out_mask = k < kPoints ? std::max(0.0f, (c - k * in_mask) / (kPoints - k)) : 0.0f;
+    }
+    const Vec3f one{1, 1, 1};
+    Vec3f sum;
+    for (int b = 0; b < kPoints; ++b) {
+      float o = (mask >> b) & 1 ? in_mask : out_mask;
+      if (o == 0.0f) continue;
+      Vec3f& t = point_transmittance_[b];
+      sum += mul(t, s.Ci) * o;
+      t = mul(t, one - s.Oi * o);
+    }
+    color_ += sum * (1.0f / kPoints);
   }
 
   template <class Shade>
@@ -126,8 +159,13 @@ class ABuffer {
 
   std::vector<Fragment> pending_;
   std::vector<uint32_t> finished_strands_;
+  static constexpr int kPoints = kMaskSide * kMaskSide;
   Vec3f color_;
-  Vec3f transmittance_{1, 1, 1};
+  std::array<Vec3f, kPoints> point_transmittance_ = [] {
+    std::array<Vec3f, kPoints> a;
+    a.fill(Vec3f{1, 1, 1});
+    return a;
+  }();
   size_t peak_ = 0;
   size_t added_ = 0;
 };

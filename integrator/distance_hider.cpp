@@ -99,14 +99,16 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
         case Scene::PrimKind::CurveSegment: {
           ++counters.segment_tests;
           CurveFragmentHit h;
-          if (!intersect_segment_distance(cs, local, ray, footprint, ctx.settings.coverage, ctx.ends[local], h)) break;
+          if (!intersect_segment_distance(cs, local, ray, footprint, ctx.settings.coverage, ctx.ends[local], h,
+                                          ctx.settings.coverage_masks))
+            break;
           const Material& m = scene.materials[cs.attribute_id[local]];
           if (cs.oriented[local] && m.sides == 1) {
             Vec3f n = normalize(lerp(h.u, cs.normal[2 * local], cs.normal[2 * local + 1]));
             if (m.flip_normals) n = -n;
             if (dot(n, ray.d) > 0) break;
           }
-          abuffer.add(Fragment{h.t, h.coverage, cs.strand_id[local], p, h.u, false, {}, {}}, shade);
+          abuffer.add(Fragment{h.t, h.coverage, cs.strand_id[local], p, h.u, false, {}, {}, h.mask}, shade);
           nearest = std::min(nearest, h.t);
           break;
         }
@@ -121,7 +123,7 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
           const Material& m = scene.materials[mi];
           Vec3f n = m.flip_normals ? -h.ng : h.ng;
           if (m.sides == 1 && dot(n, ray.d) > 0) break;
-          abuffer.add(Fragment{h.t, 1.0f, kNoStrand, p, 0, false, {}, {}}, shade);
+          abuffer.add(Fragment{h.t, 1.0f, kNoStrand, p, 0, false, {}, {}, kFullMask}, shade);
           nearest = std::min(nearest, h.t);
           // Nothing behind an opaque surface can be seen.
           if (m.opacity == Vec3f{1, 1, 1}) ray.tmax = std::min(ray.tmax, h.t);

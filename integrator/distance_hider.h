@@ -26,6 +26,9 @@ inline constexpr int kDefaultSortInterval = 5;
 struct DistanceHiderSettings {
   CoverageModel coverage = CoverageModel::Square;
   int sort_interval = kDefaultSortInterval;
+  // Composite with 8x8 coverage masks (where each strand lies in the footprint) instead of
+  // scalar coverage alone: removes the uncorrelated-overlap bias (docs/performance.md).
+  bool coverage_masks = true;
 };
 
 // Per-frame data the distance hider needs besides the HiderContext.

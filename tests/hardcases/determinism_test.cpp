@@ -1,5 +1,7 @@
 // The same scene rendered with one and with two threads gives bitwise identical pixels, for
 // both hiders (DESIGN.md: tiles share no mutable state and are merged in tile order).
+#include "hardcases/render_rib.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -9,15 +11,6 @@
 #include "integrator/render_frame.h"
 
 namespace darc::test {
-
-struct RenderedFrame {
-  Image image;
-  FrameStats stats;
-};
-// Defined in render_rib_util.cpp.
-RenderedFrame render_rib(const std::string& rib, const RenderOptions& options);
-std::string perspective_frame(int width, int height, int samples, float fov_degrees, const std::string& camera,
-                              const std::string& world);
 
 namespace {
 

@@ -1,6 +1,8 @@
 // The hard cases of curve-ray-tracing.md §6 for the distance-aware hider, each on a tiny scene
 // rendered by both hiders: no NaN, alpha in [0, 1], and agreement with the stochastic 64x64
 // reference within a tolerance stated (and explained) per case.
+#include "hardcases/render_rib.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,26 +15,6 @@
 #include "integrator/render_frame.h"
 
 namespace darc::test {
-
-struct RenderedFrame {
-  Image image;
-  FrameStats stats;
-};
-struct AlphaComparison {
-  bool all_valid = true;
-  float max_pixel = 0;
-  double total_relative = 0;
-  double reference_total = 0;
-};
-// Defined in render_rib_util.cpp.
-RenderedFrame render_rib(const std::string& rib, const RenderOptions& options);
-RenderOptions single_thread(HiderKind hider);
-std::string orthographic_frame(int width, int height, int samples, const std::string& world);
-std::string perspective_frame(int width, int height, int samples, float fov_degrees, const std::string& camera,
-                              const std::string& world);
-float alpha_at(const Image& image, int x, int y);
-AlphaComparison compare_alpha(const Image& test, const Image& reference);
-AlphaComparison distance_against_reference(const std::function<std::string(int samples)>& rib, CoverageModel model);
 
 namespace {
 

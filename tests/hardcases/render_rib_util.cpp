@@ -13,29 +13,17 @@
 #include <sstream>
 #include <string>
 
+#include "hardcases/render_rib.h"
+
 #include "core/scene_builder.h"
 #include "integrator/render_frame.h"
 #include "parser/rib_parser.h"
 
 namespace darc::test {
 
-// The stochastic reference: 64x64 jittered exact samples per pixel.
-constexpr int kReferenceSamples = 64;
 
 // Alpha above 1 by less than this is float rounding of a sum of filter weights.
 constexpr float kAlphaRounding = 1e-5f;
-
-struct RenderedFrame {
-  Image image;
-  FrameStats stats;
-};
-
-struct AlphaComparison {
-  bool all_valid = true;       // every alpha finite and in [0, 1]
-  float max_pixel = 0;         // largest |alpha - reference| over the pixels
-  double total_relative = 0;   // |sum alpha - sum reference| / sum reference
-  double reference_total = 0;  // sum of the reference's alpha
-};
 
 RenderOptions single_thread(HiderKind hider) {
   RenderOptions o;

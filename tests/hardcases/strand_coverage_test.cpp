@@ -1,6 +1,8 @@
 // Pixel coverage of an isolated straight strand under the distance-aware hider against the
 // stochastic hider's 64x64 reference (box pixel filter), and thread-count determinism of both
 // hiders on a small hair scene.
+#include "hardcases/render_rib.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,16 +15,6 @@
 #include "integrator/render_frame.h"
 
 namespace darc::test {
-
-struct RenderedFrame {
-  Image image;
-  FrameStats stats;
-};
-// Defined in render_rib_util.cpp.
-RenderedFrame render_rib(const std::string& rib, const RenderOptions& options);
-std::string orthographic_frame(int width, int height, int samples, const std::string& world);
-float alpha_at(const Image& image, int x, int y);
-RenderOptions single_thread(HiderKind hider);
 
 namespace {
 
