@@ -271,6 +271,10 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Ray& 
   float hw = half_max_width(width);
   if (!(hw > 0.0f)) return false;
   if (!finite3(ray.o) || !finite3(ray.d) || std::isnan(ray.tmin) || std::isnan(ray.tmax)) return false;
+  {
+    float reach0 = footprint.reach(0.0f);
+    if (!bounding_sphere_may_hit(cp, hw, ray, reach0, footprint.reach(1.0f) - reach0)) return false;
+  }
   Vec3d dir(ray.d);
   double ray_length = length(dir);
   if (!(ray_length > 0.0)) return false;

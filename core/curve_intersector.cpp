@@ -137,6 +137,7 @@ bool intersect_segment(const CurveSet& set, size_t segment, const Ray& ray, Curv
   float margin = cull_margin(width);
   if (!(margin > 0.0f)) return false;  // hidden everywhere
   if (!is_finite(ray.o) || !is_finite(ray.d) || std::isnan(ray.tmin) || std::isnan(ray.tmax)) return false;
+  if (!bounding_sphere_may_hit(cp, margin, ray)) return false;
   Vec3d dir(ray.d);
   double ray_length = length(dir);
   if (!(ray_length > 0.0)) return false;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/ray.h"
 #include "core/vec.h"
 
 namespace darc {
@@ -66,6 +67,25 @@ inline int refinement_depth(const Vec3f cp[4], float max_width) {
   if (!std::isfinite(ratio)) return kMaxRefinementDepth;
   int depth = static_cast<int>(std::ceil(0.5f * std::log2(std::max(ratio, 1.0f))));
   return std::clamp(depth, 0, kMaxRefinementDepth);
+}
+
+// A cheap rejection before the ray frame is built: the segment lies within the sphere around
+// the mean of its control points through the farthest one; the ray, widened to a cone of radius
+// reach0 + reach1 * t (zero for the exact test), must pass within that radius + margin, inside
+// its t interval. In double, so that coordinates far from the origin lose nothing.
+inline bool bounding_sphere_may_hit(const Vec3f cp[4], float margin, const Ray& ray, float reach0 = 0.0f,
+                                    float reach1 = 0.0f) {
+  Vec3d c = (Vec3d(cp[0]) + Vec3d(cp[1]) + Vec3d(cp[2]) + Vec3d(cp[3])) * 0.25;
+  double r2 = 0;
+  for (int i = 0; i < 4; ++i) r2 = std::max(r2, length_squared(Vec3d(cp[i]) - c));
+  double r = std::sqrt(r2) + margin;
+  Vec3d d(ray.d), oc = c - Vec3d(ray.o);
+  double dd = dot(d, d);
+  double tc = dot(oc, d) / dd, dt = r / std::sqrt(dd);
+  if (tc + dt < ray.tmin || tc - dt > ray.tmax) return false;
+  double reach = reach0 + reach1 * std::max(0.0, tc + dt);
+  double limit = r + reach;
+  return length_squared(oc - d * tc) <= limit * limit * (1 + 1e-6) + 1e-12;
 }
 
 }  // namespace darc
