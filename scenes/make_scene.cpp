@@ -73,7 +73,7 @@ void emit_strands(const std::vector<std::vector<V3>>& strands, double root_width
   std::printf("] \"width\" [");
   for (const auto& s : strands) {
     size_t nseg = s.size() + 2 - 3;  // b-spline: nv - 3 segments, varying count nseg + 1
-    for (size_t i = 0; i <= nseg; ++i) std::printf(" %.4g", root_width + (tip_width - root_width) * double(i) / nseg);
+    for (size_t i = 0; i <= nseg; ++i) std::printf(" %.4g", root_width + (tip_width - root_width) * double(i) / double(nseg));
   }
   std::printf(" ]\n");
 }
@@ -82,12 +82,20 @@ int strands_for(const std::string& size, int small, int large, int demo) {
   return size == "large" ? large : size == "demo" ? demo : small;
 }
 
+// World-space size of one pixel at `depth` in front of a perspective camera with field of view
+// fov (degrees, on the shorter image side of `short_side` pixels). Strand widths are given in
+// pixels through it, so that a scene keeps its strands 1/3 to 2 pixels wide at any resolution.
+double pixel_size(double depth, double fov, int short_side) {
+  return 2.0 * depth * std::tan(fov * std::numbers::pi / 360.0) / short_side;
+}
+
 void furball(const std::string& size, int res) {
   Rng rng(1);
-  header(size, res, res, 30, "Translate 0 0 5", "furball.exr");
+  const double fov = 30, px = pixel_size(5, fov, res);
+  header(size, res, res, fov, "Translate 0 0 5", "furball.exr");
   std::printf("AttributeBegin\nColor [0.35 0.22 0.12]\nSurface \"matte\"\nSphere 0.8 -0.8 0.8 360\nAttributeEnd\n");
-  std::printf("AttributeBegin\nColor [0.8 0.55 0.3]\nSurface \"plastic\" \"Ks\" [0.3] \"roughness\" [0.08]\n");
-  int n = strands_for(size, 4000, 60000, 12000);
+  std::printf("AttributeBegin\nColor [0.8 0.55 0.3]\nSurface \"hair\" \"Ks\" [0.3] \"roughness\" [0.08]\n");
+  int n = strands_for(size, 1500, 8000, 12000);
   std::vector<std::vector<V3>> strands;
   for (int i = 0; i < n; ++i) {
     V3 dir = rng.unit_vector();
@@ -101,15 +109,16 @@ void furball(const std::string& size, int res) {
     }
     strands.push_back(s);
   }
-  emit_strands(strands, 0.006, 0.002);
+  emit_strands(strands, 1.5 * px, 0.4 * px);  // 1.5 px at the root to 0.4 px at the tip
   std::printf("AttributeEnd\nWorldEnd\n");
 }
 
 void hairball(const std::string& size, int res) {
   Rng rng(2);
-  header(size, res, res, 30, "Translate 0 0 5", "hairball.exr");
-  std::printf("AttributeBegin\nColor [0.6 0.45 0.25]\nSurface \"plastic\" \"Ks\" [0.4] \"roughness\" [0.05]\n");
-  int n = strands_for(size, 1500, 20000, 5000);
+  const double fov = 30, px = pixel_size(5, fov, res);
+  header(size, res, res, fov, "Translate 0 0 5", "hairball.exr");
+  std::printf("AttributeBegin\nColor [0.6 0.45 0.25]\nSurface \"hair\" \"Ks\" [0.4] \"roughness\" [0.05]\n");
+  int n = strands_for(size, 400, 1200, 2000);
   std::vector<std::vector<V3>> strands;
   for (int i = 0; i < n; ++i) {
     V3 p = rng.unit_vector() * (0.9 * std::cbrt(rng.uniform()));
@@ -122,18 +131,22 @@ void hairball(const std::string& size, int res) {
     }
     strands.push_back(s);
   }
-  emit_strands(strands, 0.004, 0.004);
+  emit_strands(strands, 0.8 * px, 0.35 * px);
   std::printf("AttributeEnd\nWorldEnd\n");
 }
 
 void grass(const std::string& size, int res) {
   Rng rng(3);
-  // A low camera looking across the field: the far blades are much thinner than a pixel.
-  header(size, res, res * 3 / 4, 40, "Rotate -8 1 0 0\nTranslate 0 -0.6 0.5", "grass.exr");
+  const double fov = 40;
+  const int yres = res * 3 / 4;
+  // A low camera looking across the field: the nearest blades (about 2 units away) are 2 pixels
+  // wide at the root, the far ones (40 units) a tenth of a pixel.
+  const double px = pixel_size(2, fov, yres);
+  header(size, res, yres, fov, "Rotate -8 1 0 0\nTranslate 0 -0.6 0.5", "grass.exr");
   std::printf("AttributeBegin\nColor [0.25 0.18 0.1]\nSurface \"matte\"\n");
   std::printf("Polygon \"P\" [-30 0 0  30 0 0  30 0 60  -30 0 60]\nAttributeEnd\n");
   std::printf("AttributeBegin\nColor [0.2 0.6 0.15]\nSurface \"plastic\" \"Ks\" [0.2]\n");
-  int n = strands_for(size, 6000, 80000, 20000);
+  int n = strands_for(size, 6000, 30000, 20000);
   std::vector<std::vector<V3>> strands;
   for (int i = 0; i < n; ++i) {
     double z = 1 + 40 * rng.uniform() * rng.uniform();
@@ -148,15 +161,16 @@ void grass(const std::string& size, int res) {
     }
     strands.push_back(s);
   }
-  emit_strands(strands, 0.012, 0.001);
+  emit_strands(strands, 2.0 * px, 0.33 * px);
   std::printf("AttributeEnd\nWorldEnd\n");
 }
 
 void transparent_hair(const std::string& size, int res) {
   Rng rng(4);
-  header(size, res, res, 30, "Translate 0 0 4", "transparent-hair.exr");
+  const double fov = 30, px = pixel_size(4, fov, res);
+  header(size, res, res, fov, "Translate 0 0 4", "transparent-hair.exr");
   std::printf("AttributeBegin\nColor [0.9 0.8 0.6]\nOpacity [0.4 0.4 0.4]\nSurface \"matte\"\n");
-  int n = strands_for(size, 800, 10000, 3000);
+  int n = strands_for(size, 300, 1200, 3000);
   std::vector<std::vector<V3>> strands;
   for (int i = 0; i < n; ++i) {
     double x = (rng.uniform() - 0.5) * 1.6;
@@ -168,7 +182,7 @@ void transparent_hair(const std::string& size, int res) {
     }
     strands.push_back(s);
   }
-  emit_strands(strands, 0.005, 0.003);
+  emit_strands(strands, 1.0 * px, 0.5 * px);
   std::printf("AttributeEnd\nWorldEnd\n");
 }
 
@@ -180,7 +194,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::string kind = argv[1], size = argv[2];
-  int res = argc > 3 ? std::atoi(argv[3]) : (size == "large" ? 512 : size == "demo" ? 480 : 160);
+  int res = argc > 3 ? std::atoi(argv[3]) : (size == "large" ? 128 : size == "demo" ? 480 : 64);
   if (res < 8 || res > 8192) {
     std::fprintf(stderr, "darc_make_scene: resolution must be in [8, 8192]\n");
     return 2;
