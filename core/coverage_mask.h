@@ -80,7 +80,8 @@ inline CoverageMask nearest_points_mask(const FootprintSquare& sq, float cx, flo
       float d = point ? px * px + py * py : std::abs(px * nx + py * ny);
       key[b] = {(allowed >> b) & 1 ? d : std::numeric_limits<float>::infinity(), b};
     }
-  std::partial_sort(key.begin(), key.begin() + count, key.end());
+  // Linear-time selection: the pairs order by distance, then by index (deterministic ties).
+  std::nth_element(key.begin(), key.begin() + (count - 1), key.end());
   CoverageMask m = 0;
   for (int k = 0; k < count; ++k)
     if (std::isfinite(key[k].first)) m |= CoverageMask{1} << key[k].second;
