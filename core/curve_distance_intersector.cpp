@@ -1,6 +1,7 @@
 #include "core/curve_distance_intersector.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/curve_basis.h"
@@ -10,6 +11,8 @@ namespace darc {
 
 namespace {
 
+// Leaves whose projected directions are within about 30 degrees are one piece of the strand.
+constexpr float kDistinctPieceCos = 0.866f;
 // Projected tangents shorter than this fraction of the width are "seen end-on": the strand's
 // end has no direction on screen and gets no end fall-off.
 constexpr float kEndOnTangentFraction = 1e-3f;
@@ -42,6 +45,24 @@ struct DistanceState {
   float coverage = 0, t = 0, u = 0, distance = 0;
   float px = 0, py = 0, tx = 1, ty = 0, half_width = 0;
   bool end_on = false;
+  // The distinct pieces of the segment near the ray: leaves whose directions differ by more than
+  // kDistinctPieceCos (a hairpin's two legs, a kink) cover different parts of the footprint and
+  // are combined through their masks; similar leaves are the same piece (the best one counts).
+  struct Piece {
+    float coverage, px, py, tx, ty, half_width;
+    bool end_on;
+  };
+  std::array<Piece, 4> pieces{};
+  int piece_count = 0;
+
+  void add_piece(const Piece& p) {
+    for (int i = 0; i < piece_count; ++i)
+      if (pieces[i].tx * p.tx + pieces[i].ty * p.ty > kDistinctPieceCos) {
+        if (p.coverage > pieces[i].coverage) pieces[i] = p;
+        return;
+      }
+    if (piece_count < int(pieces.size())) pieces[piece_count++] = p;
+  }
 
   float reach_at_depth(float z) const { return reach0 + reach1 * std::max(0.0f, z / ray_length); }
 
@@ -180,6 +201,7 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
                   ? both_ends_falloff(fs, fe, ends.start_tx * ends.end_tx + ends.start_ty * ends.end_ty)
                   : fs * fe;
   if (!(coverage > 0.0f)) return;
+  s.add_piece({coverage, pc.x, pc.y, tx, ty, half_width, end_on});
   if (coverage > s.coverage || (coverage == s.coverage && t < s.t)) {
     s.found = true;
     s.coverage = coverage;
@@ -195,9 +217,10 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
   }
 }
 
-// Where in the footprint the best leaf's strand lies: the points nearest to it, as many as its
-// coverage is worth, on the strand's side of its ends within reach.
-CoverageMask fragment_mask(const DistanceState& s, const EndFalloff& ends) {
+// Where in the footprint the segment lies: for each distinct piece, the points nearest to it, as
+// many as its coverage is worth, on the strand's side of the segment's ends within reach. The
+// pieces' coverages combine over the union of their points (overlaps count once).
+CoverageMask fragment_mask(const DistanceState& s, const EndFalloff& ends, float& coverage) {
   FootprintAt f = s.footprint_at(s.t);
   if (f.binary) return kFullMask;
   FootprintSquare sq{f.ax_x, f.ax_y, f.ay_x, f.ay_y};
@@ -205,8 +228,18 @@ CoverageMask fragment_mask(const DistanceState& s, const EndFalloff& ends) {
   if (ends.start) allowed &= half_plane_mask(sq, ends.start_point.x, ends.start_point.y, ends.start_tx, ends.start_ty);
   if (ends.end) allowed &= half_plane_mask(sq, ends.end_point.x, ends.end_point.y, ends.end_tx, ends.end_ty);
   constexpr int kPoints = kMaskSide * kMaskSide;
-  int count = std::max(1, int(std::lround(s.coverage * kPoints)));
-  return nearest_points_mask(sq, s.px, s.py, -s.ty, s.tx, s.end_on, count, allowed);
+  CoverageMask all = 0;
+  float total = 0;
+  for (int i = 0; i < s.piece_count; ++i) {
+    const auto& p = s.pieces[i];
+    int count = std::max(1, int(std::lround(p.coverage * kPoints)));
+    CoverageMask m = nearest_points_mask(sq, p.px, p.py, -p.ty, p.tx, p.end_on, count, allowed);
+    int k = mask_count(m);
+    total += k > 0 ? p.coverage * float(mask_count(m & ~all)) / float(k) : p.coverage;
+    all |= m;
+  }
+  coverage = std::clamp(std::max(total, s.coverage), 0.0f, 1.0f);
+  return all;
 }
 
 float half_max_width(const float width[4]) {
@@ -334,7 +367,7 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Ray& 
   hit.coverage = std::min(s.coverage, 1.0f);
   hit.u = s.u;
   hit.distance = s.distance;
-  hit.mask = compute_mask ? fragment_mask(s, fall) : kFullMask;
+  hit.mask = compute_mask ? fragment_mask(s, fall, hit.coverage) : kFullMask;
   return true;
 }
 

@@ -29,6 +29,8 @@ struct Fragment {
   Vec3f color, opacity;
   // Where in the footprint the fragment lies (8 x 8 points); the scalar coverage says how much.
   CoverageMask mask = kFullMask;
+  // Surfaces: the footprint point whose sub-ray hit is shaded (-1: the ray itself).
+  int surface_point = -1;
 };
 
 struct ShadedFragment {
@@ -44,23 +46,35 @@ class ABuffer {
  public:
   void clear() {
     pending_.clear();
-    finished_strands_.clear();
     color_ = {};
     point_transmittance_.fill(Vec3f{1, 1, 1});
     peak_ = 0;
     added_ = 0;
   }
 
-  // Adds a fragment; a strand already in the list keeps its larger coverage (one fragment per
-  // strand per ray), a strand already composited or merged at the cap is ignored. `shade` is
-  // used when the list is full and two fragments must be merged.
+  // Adds a fragment. Each curve segment is a piece of its strand, cut at its own ends, so the
+  // pieces of one strand in one footprint add up: a strand already pending gets the sum of the
+  // coverages and the union of the masks (one fragment per strand per ray), keeping the depth
+  // and shading point of its largest piece. A piece of a strand already composited is composited
+  // on its own (its mask points are the ones the earlier pieces left). `shade` is used when the
+  // list is full and two fragments must be merged.
   template <class Shade>
   void add(const Fragment& f, Shade&& shade) {
     if (f.strand != kNoStrand) {
-      if (std::find(finished_strands_.begin(), finished_strands_.end(), f.strand) != finished_strands_.end()) return;
       for (Fragment& p : pending_)
         if (p.strand == f.strand && !p.preshaded) {
-          if (f.coverage > p.coverage || (f.coverage == p.coverage && f.t < p.t)) p = f;
+          // The new piece adds the part of its coverage on points the strand did not cover yet:
+          // pieces side by side (a joint) add up, pieces over each other (a kink, a hairpin)
+          // count once. Without masks (all points), pieces just add.
+          float added = f.coverage;
+          int k = mask_count(f.mask);
+          if (k > 0 && !(f.mask == kFullMask && p.mask == kFullMask))
+            added *= float(mask_count(f.mask & ~p.mask)) / float(k);
+          float sum = std::min(1.0f, p.coverage + added);
+          CoverageMask mask = p.mask | f.mask;
+          if (f.coverage > p.coverage) p = f;
+          p.coverage = sum;
+          p.mask = mask;
           return;
         }
     }
@@ -77,7 +91,6 @@ class ABuffer {
     size_t n = 0;
     while (n < pending_.size() && pending_[n].t <= t_final) {
       composite(pending_[n], shade);
-      if (pending_[n].strand != kNoStrand) finished_strands_.push_back(pending_[n].strand);
       ++n;
     }
     pending_.erase(pending_.begin(), pending_.begin() + long(n));
@@ -145,10 +158,6 @@ class ABuffer {
     Fragment& near = pending_[pending_.size() - 2];
     const Fragment& far = pending_.back();
     ShadedFragment a = weighted(near, shade), b = weighted(far, shade);
-    // Both strands now live in a preshaded fragment that dedupe cannot update: close them, or
-    // another segment of either strand would add its coverage a second time.
-    for (uint32_t strand : {near.strand, far.strand})
-      if (strand != kNoStrand) finished_strands_.push_back(strand);
     Fragment m = near;
     m.preshaded = true;
     m.color = a.Ci + mul(Vec3f{1, 1, 1} - a.Oi, b.Ci);
@@ -158,7 +167,6 @@ class ABuffer {
   }
 
   std::vector<Fragment> pending_;
-  std::vector<uint32_t> finished_strands_;
   static constexpr int kPoints = kMaskSide * kMaskSide;
   Vec3f color_;
   std::array<Vec3f, kPoints> point_transmittance_ = [] {

@@ -36,11 +36,17 @@ RayFootprint camera_footprint(const Camera& cam, double x, double y, double spac
 
 }  // namespace
 
+Ray footprint_sub_ray(const Ray& ray, const RayFootprint& footprint, int point) {
+  const float step = 1.0f / kMaskSide;
+  float u = (float(point % kMaskSide) + 0.5f) * step - 0.5f, v = (float(point / kMaskSide) + 0.5f) * step - 0.5f;
+  Ray r = ray;
+  r.o = ray.o + footprint.dox * u + footprint.doy * v;
+  r.d = ray.d + footprint.ddx * u + footprint.ddy * v;
+  return r;
+}
+
 DistanceContext make_distance_context(const HiderContext& base, const DistanceHiderSettings& settings) {
-  DistanceContext ctx{base, settings, {}, 0};
-  const CurveSet& cs = base.scene.curves;
-  ctx.ends.resize(cs.size());
-  for (size_t i = 0; i < cs.size(); ++i) ctx.ends[i] = segment_ends(cs, i);
+  DistanceContext ctx{base, settings, 0};
   Vec3f extent = base.scene.bounds.empty() ? Vec3f{1, 1, 1} : base.scene.bounds.extent();
   ctx.min_radius = kMinFootprintSceneFraction * std::max(max_component(extent), 1e-6f);
   return ctx;
@@ -76,7 +82,7 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
       if (length_squared(sp.dPdv) == 0.0f) sp.dPdv = normalize(cp[3] - cp[0]);
     } else {
       SurfaceHit h;
-      Ray r = camera_ray;
+      Ray r = f.surface_point < 0 ? camera_ray : footprint_sub_ray(camera_ray, footprint, f.surface_point);
       r.tmin = f.t * (1 - 1e-4f);
       r.tmax = f.t * (1 + 1e-4f) + 1e-6f;
       bool is_sphere = kind == Scene::PrimKind::Sphere;
@@ -99,7 +105,9 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
         case Scene::PrimKind::CurveSegment: {
           ++counters.segment_tests;
           CurveFragmentHit h;
-          if (!intersect_segment_distance(cs, local, ray, footprint, ctx.settings.coverage, ctx.ends[local], h,
+          // Every segment is cut at both of its ends, joints included: the A-buffer adds the
+          // pieces of a strand up, so a strand shorter than the footprint covers only its length.
+          if (!intersect_segment_distance(cs, local, ray, footprint, ctx.settings.coverage, SegmentEnds{true, true}, h,
                                           ctx.settings.coverage_masks))
             break;
           const Material& m = scene.materials[cs.attribute_id[local]];
@@ -114,19 +122,23 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
         }
         case Scene::PrimKind::Sphere:
         case Scene::PrimKind::Polygon: {
-          ++counters.surface_tests;
-          SurfaceHit h;
           bool is_sphere = scene.prim_kind(p, local) == Scene::PrimKind::Sphere;
-          bool hit = is_sphere ? scene.spheres[local].intersect(ray, h) : scene.polygons[local].intersect(ray, h);
-          if (!hit) break;
           uint32_t mi = is_sphere ? scene.sphere_material[local] : scene.polygon_material[local];
           const Material& m = scene.materials[mi];
-          Vec3f n = m.flip_normals ? -h.ng : h.ng;
-          if (m.sides == 1 && dot(n, ray.d) > 0) break;
-          abuffer.add(Fragment{h.t, 1.0f, kNoStrand, p, 0, false, {}, {}, kFullMask}, shade);
-          nearest = std::min(nearest, h.t);
-          // Nothing behind an opaque surface can be seen.
-          if (m.opacity == Vec3f{1, 1, 1}) ray.tmax = std::min(ray.tmax, h.t);
+          // A visible hit of this surface by `r` (Sides 1 surfaces seen from behind are not).
+          auto hit_surface = [&](const Ray& r, SurfaceHit& h) {
+            ++counters.surface_tests;
+            bool hit = is_sphere ? scene.spheres[local].intersect(r, h) : scene.polygons[local].intersect(r, h);
+            return hit && !(m.sides == 1 && dot(m.flip_normals ? -h.ng : h.ng, r.d) > 0);
+          };
+          SurfaceFragment sf;
+          if (!surface_coverage(ray, footprint, hit_surface, sf)) break;
+          Fragment f{sf.t, sf.coverage, kNoStrand, p, 0, false, {}, {}, sf.mask, sf.point};
+          if (!ctx.settings.coverage_masks) f.mask = kFullMask;
+          abuffer.add(f, shade);
+          nearest = std::min(nearest, sf.t);
+          // Nothing behind an opaque surface that covers the whole footprint can be seen.
+          if (sf.coverage == 1.0f && m.opacity == Vec3f{1, 1, 1}) ray.tmax = std::min(ray.tmax, sf.t);
           break;
         }
       }

@@ -9,7 +9,11 @@
 #include "core/coverage.h"
 #include "core/curve_distance_intersector.h"
 #include "integrator/abuffer.h"
+#include "core/coverage_mask.h"
+#include "core/surface_hit.h"
 #include "integrator/stochastic_hider.h"
+
+#include <limits>
 
 #include <vector>
 
@@ -35,11 +39,63 @@ struct DistanceHiderSettings {
 struct DistanceContext {
   const HiderContext& base;
   DistanceHiderSettings settings;
-  std::vector<SegmentEnds> ends;  // per curve segment
   float min_radius;               // footprint floor (scene-scale relative)
 };
 
 DistanceContext make_distance_context(const HiderContext& base, const DistanceHiderSettings& settings);
+
+// The ray through footprint point `point` of the 8 x 8 mask grid (its differentials applied).
+Ray footprint_sub_ray(const Ray& ray, const RayFootprint& footprint, int point);
+
+// Surfaces are antialiased with the same footprint: a surface whose edge crosses the footprint
+// covers the mask points whose sub-rays hit it. The ray itself and the four corner points are
+// tried first; when all five hit, the surface covers the footprint (exact for convex shapes; a
+// hole smaller than the footprint between the five points is missed), when none does, it is
+// taken to miss it (a surface smaller than the footprint between them is missed).
+struct SurfaceFragment {
+  float t = 0;
+  float coverage = 0;
+  CoverageMask mask = 0;
+  int point = -1;  // the sub-ray whose hit is shaded (-1: the ray itself)
+};
+
+template <class HitSurface>
+bool surface_coverage(const Ray& ray, const RayFootprint& footprint, HitSurface&& hit_surface, SurfaceFragment& out) {
+  SurfaceHit h;
+  bool centre = hit_surface(ray, h);
+  float centre_t = h.t;
+  if (!footprint.has_differentials()) {
+    if (!centre) return false;
+    out = {centre_t, 1.0f, kFullMask, -1};
+    return true;
+  }
+  constexpr int kLast = kMaskSide * kMaskSide - 1;
+  const int corners[4] = {0, kMaskSide - 1, kLast - (kMaskSide - 1), kLast};
+  int corner_hits = 0;
+  for (int c : corners) corner_hits += hit_surface(footprint_sub_ray(ray, footprint, c), h);
+  if (centre && corner_hits == 4) {
+    out = {centre_t, 1.0f, kFullMask, -1};
+    return true;
+  }
+  if (!centre && corner_hits == 0) return false;
+  CoverageMask mask = 0;
+  float nearest_t = std::numeric_limits<float>::infinity();
+  int nearest_point = -1;
+  for (int b = 0; b <= kLast; ++b) {
+    if (!hit_surface(footprint_sub_ray(ray, footprint, b), h)) continue;
+    mask |= CoverageMask{1} << b;
+    if (h.t < nearest_t) {
+      nearest_t = h.t;
+      nearest_point = b;
+    }
+  }
+  if (mask == 0) return false;
+  out.mask = mask;
+  out.coverage = float(mask_count(mask)) / float(kLast + 1);
+  out.t = centre ? centre_t : nearest_t;
+  out.point = centre ? -1 : nearest_point;
+  return true;
+}
 
 // The colour, alpha and depth seen by one camera ray with footprint `footprint`.
 SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,

@@ -18,12 +18,17 @@ namespace darc::test {
 
 namespace {
 
-// Where a strand covers a pixel twice (inside a tight bend, where a loop crosses itself), one
-// fragment per strand per ray keeps the larger coverage, not the union (curve-ray-tracing.md §6
-// cases 3 and 8): such pixels come out too light by up to the smaller part. A modelling limit
-// of scalar coverage, not a bug; the rest of the image agrees to a few thousandths.
+// Where a strand covers a pixel twice (where a loop crosses itself, a Catmull-Rom swing), the
+// pieces of the strand combine through their coverage masks; what the masks place imprecisely
+// (1/8 of the footprint) leaves such pixels off by up to this much (curve-ray-tracing.md §6
+// cases 3 and 8). The rest of the image agrees to a few thousandths.
 constexpr float kSelfOverlapPixelTolerance = 0.25f;
 constexpr double kSelfOverlapTotalTolerance = 0.05;
+// Bends tighter than the strand's width: every segment is cut at its joints (so that a strand
+// shorter than the footprint covers only its length: docs/performance.md, grass), and the part
+// of a segment that curves back across its joint's line is cut with it. Measured: 0.27 at one
+// pixel inside the hairpin and one at the Catmull-Rom kink.
+constexpr float kTightBendPixelTolerance = 0.3f;
 
 AlphaComparison check_against_reference(const char* name, const std::function<std::string(int)>& rib) {
   AlphaComparison c = distance_against_reference(rib, CoverageModel::Square);
@@ -95,8 +100,8 @@ TEST(HardCases, KinksAndCoincidentControlPoints) {
                               "0.6 -3 5  3 2 5  3 2 5] \"constantwidth\" [1.2]\n");
   };
   AlphaComparison c = check_against_reference("hairpin", hairpin);
-  // Measured: 0.17 inside the bend, 1.3% in total.
-  EXPECT_LE(c.max_pixel, kSelfOverlapPixelTolerance);
+  // Measured: 0.27 inside the bend, 0.3% in total.
+  EXPECT_LE(c.max_pixel, kTightBendPixelTolerance);
   EXPECT_LE(c.total_relative, kSelfOverlapTotalTolerance);
   auto kink = [](int samples) {
     return orthographic_frame(10, 10, samples,
@@ -104,8 +109,8 @@ TEST(HardCases, KinksAndCoincidentControlPoints) {
                               "Curves \"cubic\" [6] \"nonperiodic\" \"P\" [-5 -4 5  -4 -3 5  0 3 5  0.2 -3 5  "
                               "4 2 5  5 3 5] \"constantwidth\" [0.4]\n");
   };
-  c = check_against_reference("catmull-rom kink", kink);  // measured: 0.22 at the kink, 2.7% in total
-  EXPECT_LE(c.max_pixel, kSelfOverlapPixelTolerance);
+  c = check_against_reference("catmull-rom kink", kink);  // measured: 0.27 at the kink, 3.3% in total
+  EXPECT_LE(c.max_pixel, kTightBendPixelTolerance);
   EXPECT_LE(c.total_relative, kSelfOverlapTotalTolerance);
 }
 
@@ -166,8 +171,9 @@ TEST(HardCases, SelfLoopingCurve) {
   };
   AlphaComparison c = check_against_reference("self loop", loop);
   EXPECT_GT(c.reference_total, 3.0);
-  // Measured: 0.19 at the crossing pixel (0.45 against 0.64), 0.4% elsewhere; 4.3% in total.
-  EXPECT_LE(c.max_pixel, kSelfOverlapPixelTolerance);
+  // Measured: 0.03 at the crossing pixel (the two passes combine through their masks); 0.7% in
+  // total. (Keeping the larger coverage per strand instead gave 0.19.)
+  EXPECT_LE(c.max_pixel, 0.1f);
   EXPECT_LE(c.total_relative, kSelfOverlapTotalTolerance);
 }
 
