@@ -160,6 +160,7 @@ float both_ends_falloff(float fs, float fe, float cos_angle) {
 
 struct EndFalloff {
   bool start = false, end = false;
+  bool start_is_joint = false, end_is_joint = false;  // cut only where the strand runs straight on
   Vec3f start_point, end_point;  // ray space
   float start_tx = 0, start_ty = 0, end_tx = 0, end_ty = 0;
 };
@@ -190,14 +191,17 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
     ty = 0.0f;
   }
   float coverage = end_on ? end_on_coverage(s, f, pc.x, pc.y, half_width) : band_coverage(s, f, d, half_width, tx, ty);
+  const bool cut_start =
+      ends.start && (!ends.start_is_joint || tx * ends.start_tx + ty * ends.start_ty > kDistinctPieceCos);
+  const bool cut_end = ends.end && (!ends.end_is_joint || -(tx * ends.end_tx + ty * ends.end_ty) > kDistinctPieceCos);
   float fs = 1.0f, fe = 1.0f;
-  if (ends.start)
+  if (cut_start)
     fs = end_falloff(s, f, -(ends.start_point.x * ends.start_tx + ends.start_point.y * ends.start_ty), ends.start_tx,
                      ends.start_ty);
-  if (ends.end)
+  if (cut_end)
     fe = end_falloff(s, f, -(ends.end_point.x * ends.end_tx + ends.end_point.y * ends.end_ty), ends.end_tx,
                      ends.end_ty);
-  coverage *= ends.start && ends.end
+  coverage *= cut_start && cut_end
                   ? both_ends_falloff(fs, fe, ends.start_tx * ends.end_tx + ends.start_ty * ends.end_ty)
                   : fs * fe;
   if (!(coverage > 0.0f)) return;
@@ -224,14 +228,19 @@ CoverageMask fragment_mask(const DistanceState& s, const EndFalloff& ends, float
   FootprintAt f = s.footprint_at(s.t);
   if (f.binary) return kFullMask;
   FootprintSquare sq{f.ax_x, f.ax_y, f.ay_x, f.ay_y};
-  CoverageMask allowed = kFullMask;
-  if (ends.start) allowed &= half_plane_mask(sq, ends.start_point.x, ends.start_point.y, ends.start_tx, ends.start_ty);
-  if (ends.end) allowed &= half_plane_mask(sq, ends.end_point.x, ends.end_point.y, ends.end_tx, ends.end_ty);
+  const CoverageMask start_side =
+      ends.start ? half_plane_mask(sq, ends.start_point.x, ends.start_point.y, ends.start_tx, ends.start_ty) : kFullMask;
+  const CoverageMask end_side =
+      ends.end ? half_plane_mask(sq, ends.end_point.x, ends.end_point.y, ends.end_tx, ends.end_ty) : kFullMask;
   constexpr int kPoints = kMaskSide * kMaskSide;
   CoverageMask all = 0;
   float total = 0;
   for (int i = 0; i < s.piece_count; ++i) {
     const auto& p = s.pieces[i];
+    // The same rule as the coverage: joints cut only the pieces that run straight through them.
+    CoverageMask allowed = kFullMask;
+    if (!ends.start_is_joint || p.tx * ends.start_tx + p.ty * ends.start_ty > kDistinctPieceCos) allowed &= start_side;
+    if (!ends.end_is_joint || -(p.tx * ends.end_tx + p.ty * ends.end_ty) > kDistinctPieceCos) allowed &= end_side;
     int count = std::max(1, int(std::lround(p.coverage * kPoints)));
     CoverageMask m = nearest_points_mask(sq, p.px, p.py, -p.ty, p.tx, p.end_on, count, allowed);
     int k = mask_count(m);
@@ -344,13 +353,15 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Ray& 
 
   EndFalloff fall;
   float min_tangent = kEndOnTangentFraction * 2.0f * hw;
-  if (ends.strand_start) {
+  fall.start_is_joint = !ends.strand_start;
+  fall.end_is_joint = !ends.strand_end;
+  if (ends.strand_start || ends.cut_joints) {
     Vec3f d0 = ray_cp[1] - ray_cp[0];
     if (length_squared(d0) == 0.0f) d0 = ray_cp[2] - ray_cp[0];
     fall.start = unit_2d(d0, min_tangent, fall.start_tx, fall.start_ty) && end_within_reach(ray_cp[0], hw, s);
     fall.start_point = ray_cp[0];
   }
-  if (ends.strand_end) {
+  if (ends.strand_end || ends.cut_joints) {
     Vec3f d1 = ray_cp[2] - ray_cp[3];
     if (length_squared(d1) == 0.0f) d1 = ray_cp[1] - ray_cp[3];
     fall.end = unit_2d(d1, min_tangent, fall.end_tx, fall.end_ty) && end_within_reach(ray_cp[3], hw, s);

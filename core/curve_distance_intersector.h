@@ -27,6 +27,11 @@ struct CurveFragmentHit {
 struct SegmentEnds {
   bool strand_start = false;
   bool strand_end = false;
+  // Also cut at the segment's joints where the strand runs straight through them (the leaf's
+  // direction within ~30 degrees of the joint's): the A-buffer then adds the pieces of a strand
+  // up, so a strand shorter than the footprint covers only its length. Where the strand turns at
+  // a joint, the neighbouring pieces overlap instead and count once through their masks.
+  bool cut_joints = false;
 };
 
 // The best (largest coverage, then nearest) closest approach of `ray` to segment `segment` with

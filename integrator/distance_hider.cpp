@@ -46,7 +46,10 @@ Ray footprint_sub_ray(const Ray& ray, const RayFootprint& footprint, int point) 
 }
 
 DistanceContext make_distance_context(const HiderContext& base, const DistanceHiderSettings& settings) {
-  DistanceContext ctx{base, settings, 0};
+  DistanceContext ctx{base, settings, {}, 0};
+  const CurveSet& cs = base.scene.curves;
+  ctx.ends.resize(cs.size());
+  for (size_t i = 0; i < cs.size(); ++i) ctx.ends[i] = segment_ends(cs, i);
   Vec3f extent = base.scene.bounds.empty() ? Vec3f{1, 1, 1} : base.scene.bounds.extent();
   ctx.min_radius = kMinFootprintSceneFraction * std::max(max_component(extent), 1e-6f);
   return ctx;
@@ -105,9 +108,11 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
         case Scene::PrimKind::CurveSegment: {
           ++counters.segment_tests;
           CurveFragmentHit h;
-          // Every segment is cut at both of its ends, joints included: the A-buffer adds the
-          // pieces of a strand up, so a strand shorter than the footprint covers only its length.
-          if (!intersect_segment_distance(cs, local, ray, footprint, ctx.settings.coverage, SegmentEnds{true, true}, h,
+          // Segments are cut at their strand's ends and at joints the strand runs straight
+          // through: the A-buffer adds the pieces of a strand up (SegmentEnds::cut_joints).
+          SegmentEnds ends = ctx.ends[local];
+          ends.cut_joints = true;
+          if (!intersect_segment_distance(cs, local, ray, footprint, ctx.settings.coverage, ends, h,
                                           ctx.settings.coverage_masks))
             break;
           const Material& m = scene.materials[cs.attribute_id[local]];
