@@ -123,7 +123,10 @@ void write_variants(std::ostream& out, std::span<const SceneReport> scenes, bool
     out << "## Coverage models (distance hider, 1x1)\n\n"
            "`box` is the seed paper's formula (a 1D box footprint of radius r), `disc` a disc footprint, `square` "
            "the pixel square spanned by the ray differentials (the default: exact for a straight band under the "
-           "box filter). Time in seconds, then RMSE and max error.\n\n";
+           "box filter). All three composite with 8x8 coverage masks; `scalar` is `square` without masks, "
+           "compositing coverage as if strands were uncorrelated (the seed's A-buffer): the difference between "
+           "`scalar` and `square` is the error the uncorrelated-coverage bias costs. Time in seconds, then RMSE and "
+           "max error.\n\n";
   } else {
     out << "## A-buffer sort interval (distance hider, 1x1)\n\n"
            "Grid layers traversed between two sorts-and-composites of the A-buffer (the seed's value is 5). "

@@ -232,6 +232,11 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
     ro.distance.coverage = model;
     report.coverage.push_back(measure_variant(*scene, ro, o, *reference, label));
   }
+  {
+    RenderOptions ro = render_options(HiderKind::Distance, o);
+    ro.distance.coverage_masks = false;
+    report.coverage.push_back(measure_variant(*scene, ro, o, *reference, "scalar"));
+  }
   if (measures_sort_interval(o, name)) {
     for (int interval = kMinSortInterval; interval <= kMaxSortInterval; ++interval) {
       RenderOptions ro = render_options(HiderKind::Distance, o);
