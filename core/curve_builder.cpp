@@ -22,24 +22,6 @@ constexpr int kMinLinearPeriodicVertices = 3;
 // other is a point (float keeps ~7 digits, so this is a few ulps): it is dropped at load.
 constexpr double kDegenerateRelativeExtent = 1e-6;
 
-// Local so that core does not need the parser's param_list implementation to link.
-const char* class_name(StorageClass storage) {
-  switch (storage) {
-    case StorageClass::Constant:
-      return "constant";
-    case StorageClass::Uniform:
-      return "uniform";
-    case StorageClass::Varying:
-      return "varying";
-    case StorageClass::Vertex:
-      return "vertex";
-    case StorageClass::FaceVarying:
-      return "facevarying";
-    case StorageClass::FaceVertex:
-      return "facevertex";
-  }
-  return "?";
-}
 
 size_t sum_vertices(const CurvesTopology& topology) {
   size_t total = 0;
@@ -109,7 +91,7 @@ void validate_primvar(const std::optional<PrimvarInput>& pv, const char* name, i
   size_t count = expected_count(pv->storage, topology);
   size_t floats = count * static_cast<size_t>(components);
   if (pv->values.size() != floats)
-    throw RibError(fmt::format("\"{}\" ({}) needs {} floats for {} values, found {}", name, class_name(pv->storage),
+    throw RibError(fmt::format("\"{}\" ({}) needs {} floats for {} values, found {}", name, to_string(pv->storage),
                                floats, count, pv->values.size()));
   check_finite(pv->values, name);
 }

@@ -1,0 +1,173 @@
+// SceneBuilder's geometry requests: Curves, Sphere and the polygons, turned into world-space
+// shapes of the scene being built (the graphics state itself lives in scene_builder.cpp).
+#include "core/curve_builder.h"
+#include "core/curve_set.h"
+#include "core/scene_builder.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace darc {
+
+// ---------------------------------------------------------------- geometry
+
+bool SceneBuilder::building_geometry(const char* request, const SourceLoc& loc) {
+  if (!in_world_) throw RibError(std::string(request) + " outside WorldBegin/WorldEnd");
+  return !frame_skipped_ && scene_ != nullptr && (void(loc), true);
+}
+
+uint32_t SceneBuilder::make_material(const SourceLoc&) {
+  Material m;
+  m.surface = attributes_.surface;
+  m.surface_params = attributes_.surface_params;
+  m.surface_loc = attributes_.surface_loc;
+  m.color = attributes_.color;
+  m.opacity = attributes_.opacity;
+  m.sides = attributes_.sides;
+  m.flip_normals = attributes_.orientation_lh != object_space_left_handed();
+  m.matte = attributes_.matte;
+  m.lights = attributes_.lights_on;
+  m.emissive_area_light = attributes_.area_light;
+  m.area_light_params = attributes_.area_light_params;
+  scene_->materials.push_back(std::move(m));
+  return uint32_t(scene_->materials.size() - 1);
+}
+
+Vec3f SceneBuilder::to_world(const float* p) const {
+  return Vec3f(ctm_.transform_point(Vec3d{p[0], p[1], p[2]}));
+}
+
+namespace {
+
+std::optional<PrimvarInput> primvar(const ParamList& params, const char* name, int components) {
+  const Param* p = params.find(name);
+  if (!p) return std::nullopt;
+  if (p->decl.is_string() || p->decl.components() != components)
+    throw RibError(std::string("\"") + name + "\" must have " + std::to_string(components) +
+                   " numbers per value, declared as " + to_string(p->decl));
+  return PrimvarInput{p->decl.storage, p->floats, components};
+}
+
+// Reads "P" (3 floats per point) or "Pw" (4, divided by w) as 3-float points.
+std::vector<float> read_points(const ParamList& params, const char* request) {
+  if (const Param* p = params.find("P")) {
+    if (p->decl.components() != 3) throw RibError("\"P\" must be declared with 3 numbers per point");
+    return p->floats;
+  }
+  if (const Param* p = params.find("Pw")) {
+    if (p->decl.components() != 4) throw RibError("\"Pw\" must be declared with 4 numbers per point");
+    std::vector<float> out;
+    out.reserve(p->floats.size() / 4 * 3);
+    for (size_t i = 0; i + 3 < p->floats.size(); i += 4) {
+      float w = p->floats[i + 3];
+      if (w == 0) throw RibError("\"Pw\" has a point with w = 0");
+      out.insert(out.end(), {p->floats[i] / w, p->floats[i + 1] / w, p->floats[i + 2] / w});
+    }
+    return out;
+  }
+  throw RibError(std::string(request) + " needs \"P\" or \"Pw\"");
+}
+
+}  // namespace
+
+void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
+                          const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.curves(type, nvertices, wrap, params, loc); })) return;
+  if (skip_motion_sample()) return;
+  if (!building_geometry("Curves", loc)) return;
+  if (type != "linear" && type != "cubic")
+    throw RibError("curve type must be \"linear\" or \"cubic\", found \"" + type + "\"");
+  if (wrap != "periodic" && wrap != "nonperiodic")
+    throw RibError("wrap must be \"periodic\" or \"nonperiodic\", found \"" + wrap + "\"");
+  CurvesInput in;
+  in.cubic = type == "cubic";
+  in.periodic = wrap == "periodic";
+  in.nvertices = nvertices;
+  in.basis = attributes_.vbasis;
+  in.P = read_points(params, "Curves");
+  in.p_components = 3;
+  in.width = primvar(params, "width", 1);
+  if (const Param* cw = params.find("constantwidth")) {
+    if (cw->floats.empty()) throw RibError("\"constantwidth\" needs a value");
+    in.constantwidth = cw->floats[0];
+  }
+  in.N = primvar(params, "N", 3);
+  in.Cs = primvar(params, "Cs", 3);
+  in.Os = primvar(params, "Os", 3);
+  in.default_cs = attributes_.color;
+  in.default_os = attributes_.opacity;
+  in.object_to_world = ctm_;
+  uint32_t material = make_material(loc);
+  append_curves(scene_->curves, in, material, next_strand_id_);
+}
+
+void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
+                          const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.sphere(radius, zmin, zmax, thetamax, params, loc); })) return;
+  if (skip_motion_sample()) return;
+  if (!building_geometry("Sphere", loc)) return;
+  if (radius == 0 || thetamax == 0) return;  // empty surface
+  scene_->spheres.push_back(Sphere::make(radius, zmin, zmax, thetamax, ctm_));
+  scene_->sphere_material.push_back(make_material(loc));
+}
+
+void SceneBuilder::polygon(const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.polygon(params, loc); })) return;
+  if (skip_motion_sample()) return;
+  std::vector<float> P = read_points(params, "Polygon");
+  if (P.size() < 9) throw RibError("a polygon needs at least 3 vertices, found " + std::to_string(P.size() / 3));
+  std::vector<int> indices(P.size() / 3);
+  for (size_t i = 0; i < indices.size(); ++i) indices[i] = int(i);
+  add_polygons({1}, {int(indices.size())}, indices, params, "Polygon", loc);
+}
+
+void SceneBuilder::general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params,
+                                   const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.general_polygon(nverts_per_loop, params, loc); })) return;
+  if (skip_motion_sample()) return;
+  size_t total = 0;
+  for (int n : nverts_per_loop) {
+    if (n < 3) throw RibError("each loop needs at least 3 vertices, found " + std::to_string(n));
+    total += size_t(n);
+  }
+  std::vector<int> indices(total);
+  for (size_t i = 0; i < total; ++i) indices[i] = int(i);
+  add_polygons({int(nverts_per_loop.size())}, nverts_per_loop, indices, params, "GeneralPolygon", loc);
+}
+
+void SceneBuilder::points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,
+                                   const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.points_polygons(nverts_per_face, indices, params, loc); })) return;
+  if (skip_motion_sample()) return;
+  std::vector<int> loops(nverts_per_face.size(), 1);
+  add_polygons(loops, nverts_per_face, indices, params, "PointsPolygons", loc);
+}
+
+void SceneBuilder::points_general_polygons(const std::vector<int>& nloops_per_face,
+                                           const std::vector<int>& nverts_per_loop, const std::vector<int>& indices,
+                                           const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.points_general_polygons(nloops_per_face, nverts_per_loop, indices, params, loc); }))
+    return;
+  if (skip_motion_sample()) return;
+  add_polygons(nloops_per_face, nverts_per_loop, indices, params, "PointsGeneralPolygons", loc);
+}
+
+void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
+                                const std::vector<int>& indices, const ParamList& params, const char* request,
+                                const SourceLoc& loc) {
+  if (!building_geometry(request, loc)) return;
+  std::vector<float> P = read_points(params, request);
+  std::vector<Vec3f> world(P.size() / 3);
+  for (size_t i = 0; i < world.size(); ++i) world[i] = to_world(&P[3 * i]);
+  std::string error;
+  std::vector<PolygonShape> shapes =
+      make_points_general_polygons(nloops_per_face, nverts_per_loop, indices, world, error);
+  if (!error.empty()) throw RibError(error);
+  uint32_t material = make_material(loc);
+  for (PolygonShape& s : shapes) {
+    scene_->polygons.push_back(std::move(s));
+    scene_->polygon_material.push_back(material);
+  }
+}
+
+}  // namespace darc
