@@ -26,37 +26,33 @@ struct FootprintSquare {
   float ax_x, ax_y, ay_x, ay_y;
 };
 
-// Points p of the square for which |dot(p - c, n)| <= half_width, where c is a point on the
-// strand axis and n the unit normal of the axis (all 2D, relative to the ray).
-inline CoverageMask band_mask(const FootprintSquare& sq, float cx, float cy, float nx, float ny, float half_width) {
-  // The signed distance is affine in the point's grid coordinates: s = s0 + i*si + j*sj.
+// The points p of the square whose signed distance dot(p - c, n) to the line through c with
+// unit normal n (all 2D, relative to the ray) satisfies `keep`. The distance is affine in the
+// point's grid coordinates, s = s0 + i*si + j*sj, so it is stepped, not recomputed.
+template <class Keep>
+CoverageMask line_distance_mask(const FootprintSquare& sq, float cx, float cy, float nx, float ny, Keep&& keep) {
   const float step = 1.0f / kMaskSide;
-  float ani = (sq.ax_x * nx + sq.ax_y * ny) * step;
-  float anj = (sq.ay_x * nx + sq.ay_y * ny) * step;
-  float s0 = -(cx * nx + cy * ny) - 0.5f * (kMaskSide - 1) * (ani + anj);
+  float si = (sq.ax_x * nx + sq.ax_y * ny) * step;
+  float sj = (sq.ay_x * nx + sq.ay_y * ny) * step;
+  float s0 = -(cx * nx + cy * ny) - 0.5f * (kMaskSide - 1) * (si + sj);
   CoverageMask m = 0;
   for (int j = 0; j < kMaskSide; ++j) {
-    float s = s0 + float(j) * anj;
-    for (int i = 0; i < kMaskSide; ++i, s += ani)
-      if (s <= half_width && s >= -half_width) m |= CoverageMask{1} << (j * kMaskSide + i);
+    float s = s0 + float(j) * sj;
+    for (int i = 0; i < kMaskSide; ++i, s += si)
+      if (keep(s)) m |= CoverageMask{1} << (j * kMaskSide + i);
   }
   return m;
 }
 
-// Points p of the square on the strand's side of an end line through e with unit direction
-// (tx, ty) pointing into the strand: dot(p - e, t) >= 0.
+// Points of the band |dot(p - c, n)| <= half_width around a strand axis through c.
+inline CoverageMask band_mask(const FootprintSquare& sq, float cx, float cy, float nx, float ny, float half_width) {
+  return line_distance_mask(sq, cx, cy, nx, ny, [&](float s) { return s <= half_width && s >= -half_width; });
+}
+
+// Points on the strand's side of an end line through e with unit direction (tx, ty) pointing
+// into the strand: dot(p - e, t) >= 0.
 inline CoverageMask half_plane_mask(const FootprintSquare& sq, float ex, float ey, float tx, float ty) {
-  const float step = 1.0f / kMaskSide;
-  float ati = (sq.ax_x * tx + sq.ax_y * ty) * step;
-  float atj = (sq.ay_x * tx + sq.ay_y * ty) * step;
-  float s0 = -(ex * tx + ey * ty) - 0.5f * (kMaskSide - 1) * (ati + atj);
-  CoverageMask m = 0;
-  for (int j = 0; j < kMaskSide; ++j) {
-    float s = s0 + float(j) * atj;
-    for (int i = 0; i < kMaskSide; ++i, s += ati)
-      if (s >= 0.0f) m |= CoverageMask{1} << (j * kMaskSide + i);
-  }
-  return m;
+  return line_distance_mask(sq, ex, ey, tx, ty, [](float s) { return s >= 0.0f; });
 }
 
 // The `count` points of the square nearest to a strand, among the `allowed` ones: nearest to

@@ -104,7 +104,8 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
     for (uint32_t p : prims) {
       if (!mailbox.first_visit(p)) continue;
       uint32_t local;
-      switch (scene.prim_kind(p, local)) {
+      const Scene::PrimKind kind = scene.prim_kind(p, local);
+      switch (kind) {
         case Scene::PrimKind::CurveSegment: {
           ++counters.segment_tests;
           CurveFragmentHit h;
@@ -127,7 +128,7 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
         }
         case Scene::PrimKind::Sphere:
         case Scene::PrimKind::Polygon: {
-          bool is_sphere = scene.prim_kind(p, local) == Scene::PrimKind::Sphere;
+          bool is_sphere = kind == Scene::PrimKind::Sphere;
           uint32_t mi = is_sphere ? scene.sphere_material[local] : scene.polygon_material[local];
           const Material& m = scene.materials[mi];
           // A visible hit of this surface by `r` (Sides 1 surfaces seen from behind are not).

@@ -26,7 +26,8 @@ bool Tracer::nearest_hit(const Ray& ray_in, SurfaceInteraction& out, RayCounters
     for (uint32_t p : prims) {
       if (!mailbox.first_visit(p)) continue;
       uint32_t local;
-      switch (scene_.prim_kind(p, local)) {
+      const Scene::PrimKind kind = scene_.prim_kind(p, local);
+      switch (kind) {
         case Scene::PrimKind::CurveSegment: {
           ++counters.segment_tests;
           CurveHit h;
@@ -57,7 +58,7 @@ bool Tracer::nearest_hit(const Ray& ray_in, SurfaceInteraction& out, RayCounters
         case Scene::PrimKind::Polygon: {
           ++counters.surface_tests;
           SurfaceHit h;
-          bool is_sphere = scene_.prim_kind(p, local) == Scene::PrimKind::Sphere;
+          bool is_sphere = kind == Scene::PrimKind::Sphere;
           bool hit = is_sphere ? scene_.spheres[local].intersect(ray, h) : scene_.polygons[local].intersect(ray, h);
           if (!hit) break;
           uint32_t mi = is_sphere ? scene_.sphere_material[local] : scene_.polygon_material[local];
