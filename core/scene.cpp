@@ -2,7 +2,7 @@
 
 namespace darc {
 
-void Scene::build_acceleration() {
+void Scene::build_acceleration(AcceleratorKind kind) {
   std::vector<BBox> boxes;
   boxes.reserve(primitive_count());
   for (size_t i = 0; i < curves.size(); ++i) boxes.push_back(curves.segment_bounds(i));
@@ -11,7 +11,7 @@ void Scene::build_acceleration() {
   bounds = BBox{};
   for (const BBox& b : boxes)
     if (!b.empty()) bounds.extend(b);
-  grid = UniformGrid::build(boxes);
+  accel = Accelerator::build(kind, boxes);
 }
 
 }  // namespace darc

@@ -9,7 +9,7 @@
 #include "core/curve_set.h"
 #include "core/polygon.h"
 #include "core/sphere.h"
-#include "core/uniform_grid.h"
+#include "core/accelerator.h"
 #include "parser/param_list.h"
 #include "parser/source_loc.h"
 
@@ -60,6 +60,9 @@ struct OutputSettings {
   std::string hider = "hidden";
 };
 
+// Measured faster for both hiders on every benchmark scene (docs/performance-640.md).
+inline constexpr AcceleratorKind kDefaultAccelerator = AcceleratorKind::Grid;
+
 struct Scene {
   Camera camera;
   OutputSettings output;
@@ -70,9 +73,9 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<LightDesc> lights;
 
-  // One grid over everything: primitive index p < curves.size() is a curve segment, then the
-  // spheres, then the polygons.
-  UniformGrid grid;
+  // One acceleration structure over everything: primitive index p < curves.size() is a curve
+  // segment, then the spheres, then the polygons.
+  Accelerator accel;
   BBox bounds;
 
   enum class PrimKind { CurveSegment, Sphere, Polygon };
@@ -85,8 +88,8 @@ struct Scene {
   }
   size_t primitive_count() const { return curves.size() + spheres.size() + polygons.size(); }
 
-  // Builds the grid from the primitives (call once after all geometry is added).
-  void build_acceleration();
+  // Builds the acceleration structure over the primitives (call once after all geometry is added).
+  void build_acceleration(AcceleratorKind kind = kDefaultAccelerator);
 };
 
 }  // namespace darc

@@ -46,6 +46,7 @@ class ABuffer {
  public:
   void clear() {
     pending_.clear();
+    nearest_pending_ = std::numeric_limits<float>::infinity();
     color_ = {};
     point_transmittance_.fill(Vec3f{1, 1, 1});
     peak_ = 0;
@@ -73,20 +74,23 @@ class ABuffer {
           float sum = std::min(1.0f, p.coverage + added);
           CoverageMask mask = p.mask | f.mask;
           if (f.coverage > p.coverage) p = f;
+          nearest_pending_ = std::min(nearest_pending_, p.t);
           p.coverage = sum;
           p.mask = mask;
           return;
         }
     }
     pending_.push_back(f);
+    nearest_pending_ = std::min(nearest_pending_, f.t);
     ++added_;
     peak_ = std::max(peak_, pending_.size());
     if (pending_.size() > kMaxFragments) merge_farthest(shade);
   }
 
-  // Sorts the pending fragments and composites those with t <= t_final, front to back.
+  // Sorts the pending fragments and composites those with t <= t_final, front to back; returns
+  // how many were composited.
   template <class Shade>
-  void composite_until(float t_final, Shade&& shade) {
+  size_t composite_until(float t_final, Shade&& shade) {
     sort_pending();
     size_t n = 0;
     while (n < pending_.size() && pending_[n].t <= t_final) {
@@ -94,7 +98,13 @@ class ABuffer {
       ++n;
     }
     pending_.erase(pending_.begin(), pending_.begin() + long(n));
+    nearest_pending_ = pending_.empty() ? std::numeric_limits<float>::infinity() : pending_.front().t;
+    return n;
   }
+
+  // The depth of the nearest pending fragment (infinity when none): compositing up to a depth
+  // before it does nothing.
+  float nearest_pending() const { return nearest_pending_; }
 
   const Vec3f& color() const { return color_; }
   // The mean transmittance over the footprint.
@@ -154,19 +164,20 @@ class ABuffer {
 
   template <class Shade>
   void merge_farthest(Shade& shade) {
+    const size_t n = pending_.size();
+    if (n < 2) return;  // (never: called when the list is over full)
     sort_pending();
-    Fragment& near = pending_[pending_.size() - 2];
-    const Fragment& far = pending_.back();
-    ShadedFragment a = weighted(near, shade), b = weighted(far, shade);
-    Fragment m = near;
-    m.preshaded = true;
-    m.color = a.Ci + mul(Vec3f{1, 1, 1} - a.Oi, b.Ci);
-    m.opacity = Vec3f{1, 1, 1} - mul(Vec3f{1, 1, 1} - a.Oi, Vec3f{1, 1, 1} - b.Oi);
-    near = m;
+    const Fragment far = pending_[n - 1];
     pending_.pop_back();
+    Fragment& near = pending_[n - 2];
+    ShadedFragment a = weighted(near, shade), b = weighted(far, shade);
+    near.preshaded = true;
+    near.color = a.Ci + mul(Vec3f{1, 1, 1} - a.Oi, b.Ci);
+    near.opacity = Vec3f{1, 1, 1} - mul(Vec3f{1, 1, 1} - a.Oi, Vec3f{1, 1, 1} - b.Oi);
   }
 
   std::vector<Fragment> pending_;
+  float nearest_pending_ = std::numeric_limits<float>::infinity();
   static constexpr int kPoints = kMaskSide * kMaskSide;
   Vec3f color_;
   std::array<Vec3f, kPoints> point_transmittance_ = [] {

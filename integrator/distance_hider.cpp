@@ -1,7 +1,6 @@
 #include "integrator/distance_hider.h"
 
 #include "core/curve_basis.h"
-#include "core/footprint_traversal.h"
 #include "shading/shading_point.h"
 
 #include <limits>
@@ -56,12 +55,12 @@ DistanceContext make_distance_context(const HiderContext& base, const DistanceHi
 }
 
 SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray, const RayFootprint& footprint,
-                               RayCounters& counters, Mailbox& mailbox, ABuffer& abuffer) {
+                               RayCounters& counters, RayScratch& scratch) {
   const Scene& scene = ctx.base.scene;
   const CurveSet& cs = scene.curves;
   Ray ray = camera_ray;
+  ABuffer& abuffer = scratch.abuffer;
   abuffer.clear();
-  mailbox.next_ray();
   float nearest = std::numeric_limits<float>::infinity();
 
   auto shade = [&](const Fragment& f) -> ShadedFragment {
@@ -100,9 +99,7 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
     return {r.Ci, r.Oi};
   };
 
-  auto visit_cell = [&](std::span<const uint32_t> prims) {
-    for (uint32_t p : prims) {
-      if (!mailbox.first_visit(p)) continue;
+  auto visit = [&](uint32_t p) {
       uint32_t local;
       const Scene::PrimKind kind = scene.prim_kind(p, local);
       switch (kind) {
@@ -115,12 +112,12 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
           ends.cut_joints = true;
           if (!intersect_segment_distance(cs, local, ray, footprint, ctx.settings.coverage, ends, h,
                                           ctx.settings.coverage_masks))
-            break;
+            return;
           const Material& m = scene.materials[cs.attribute_id[local]];
           if (cs.oriented[local] && m.sides == 1) {
             Vec3f n = normalize(lerp(h.u, cs.normal[2 * local], cs.normal[2 * local + 1]));
             if (m.flip_normals) n = -n;
-            if (dot(n, ray.d) > 0) break;
+            if (dot(n, ray.d) > 0) return;
           }
           abuffer.add(Fragment{h.t, h.coverage, cs.strand_id[local], p, h.u, false, {}, {}, h.mask}, shade);
           nearest = std::min(nearest, h.t);
@@ -138,7 +135,7 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
             return hit && !(m.sides == 1 && dot(m.flip_normals ? -h.ng : h.ng, r.d) > 0);
           };
           SurfaceFragment sf;
-          if (!surface_coverage(ray, footprint, hit_surface, sf)) break;
+          if (!surface_coverage(ray, footprint, hit_surface, sf)) return;
           Fragment f{sf.t, sf.coverage, kNoStrand, p, 0, false, {}, {}, sf.mask, sf.point};
           if (!ctx.settings.coverage_masks) f.mask = kFullMask;
           abuffer.add(f, shade);
@@ -148,21 +145,22 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
           break;
         }
       }
-    }
   };
 
-  int layers = 0;
+  int steps = 0;
   bool terminated = false;
-  auto layer_done = [&](float t_final) {
-    if (++layers % ctx.settings.sort_interval != 0 && t_final < ray.tmax) return true;
-    abuffer.composite_until(t_final, shade);
-    if (max_component(abuffer.transmittance()) < kDistanceMinTransmittance) {
+  auto progress = [&](float t_final) {
+    if (++steps % ctx.settings.sort_interval != 0 && t_final < ray.tmax) return true;
+    // Nothing pending is final yet: compositing would do nothing.
+    if (t_final < abuffer.nearest_pending() && t_final < ray.tmax) return true;
+    if (abuffer.composite_until(t_final, shade) > 0 &&
+        max_component(abuffer.transmittance()) < kDistanceMinTransmittance) {
       terminated = true;
       return false;
     }
     return t_final < ray.tmax;
   };
-  counters.cells_visited += traverse_with_footprint(scene.grid, ray, footprint, visit_cell, layer_done);
+  counters.cells_visited += scene.accel.footprint_walk(ray, footprint, scratch.traversal, visit, progress);
   if (terminated) {
     ++counters.rays_terminated_early;
   } else {
@@ -183,8 +181,7 @@ void render_tile_distance(const DistanceContext& ctx, const PixelRect& rect, Til
                           RayCounters& counters) {
   const int nx = ctx.base.samples_x, ny = ctx.base.samples_y;
   const Camera& cam = ctx.base.scene.camera;
-  Mailbox mailbox(ctx.base.scene.primitive_count());
-  ABuffer abuffer;
+  RayScratchStack scratch(ctx.base.scene.accel);
   double spacing = 1.0 / std::max(nx, ny);
   for (int py = rect.y0; py < rect.y1; ++py)
     for (int px = rect.x0; px < rect.x1; ++px)
@@ -195,7 +192,7 @@ void render_tile_distance(const DistanceContext& ctx, const PixelRect& rect, Til
           Ray ray = cam.generate_ray(x, y);
           RayFootprint fp = camera_footprint(cam, x, y, spacing, ray, ctx.min_radius);
           ++counters.primary_rays;
-          SampleValue v = trace_distance_ray(ctx, ray, fp, counters, mailbox, abuffer);
+          SampleValue v = trace_distance_ray(ctx, ray, fp, counters, scratch.at(0));
           acc.add_sample(float(x), float(y), {v.color.x, v.color.y, v.color.z, v.alpha}, v.depth);
         }
 }

@@ -9,6 +9,7 @@
 #include "core/coverage.h"
 #include "core/curve_distance_intersector.h"
 #include "integrator/abuffer.h"
+#include "integrator/ray_scratch.h"
 #include "core/coverage_mask.h"
 #include "core/surface_hit.h"
 #include "integrator/stochastic_hider.h"
@@ -22,9 +23,10 @@ namespace darc {
 // Remaining transmittance below which a ray stops: what is behind can change the pixel by at
 // most this fraction (curve-ray-tracing.md §6 case 8 suggests 1e-3).
 inline constexpr float kDistanceMinTransmittance = 1e-3f;
-// Traversal steps (grid layers) between two sorts-and-composites of the A-buffer: the seed's
-// 5. Fewer sorts cost less; more frequent ones terminate opaque rays earlier
-// (docs/performance.md measures 1-10).
+// Traversal steps (grid layers, BVH nodes) between two sorts-and-composites of the A-buffer:
+// the seed's 5. Fewer sorts cost less; more frequent ones terminate opaque rays earlier
+// (docs/performance.md measures 1-10 on the grid). A composite only happens when a pending
+// fragment has become final, so with the BVH (a step per node) the interval matters less.
 inline constexpr int kDefaultSortInterval = 5;
 
 struct DistanceHiderSettings {
@@ -99,8 +101,9 @@ bool surface_coverage(const Ray& ray, const RayFootprint& footprint, HitSurface&
 }
 
 // The colour, alpha and depth seen by one camera ray with footprint `footprint`.
+// `scratch` is this ray's level of the tile's RayScratchStack.
 SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
-                               RayCounters& counters, Mailbox& mailbox, ABuffer& abuffer);
+                               RayCounters& counters, RayScratch& scratch);
 
 // Renders the samples of the pixels in `rect`: N x N rays per pixel through the centres of the
 // strata, each with a footprint of 1/N of a pixel.

@@ -19,14 +19,15 @@ constexpr float kContinueEpsilon = 1e-5f;
 
 }  // namespace
 
-SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, RayCounters& counters, Mailbox& mailbox) {
+SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, RayCounters& counters,
+                             RayScratchStack& scratch) {
   SampleValue out;
   out.depth = std::numeric_limits<float>::infinity();
   Vec3f transmittance{1, 1, 1};
   Ray ray = camera_ray;
   for (int layer = 0; layer < kMaxLayers; ++layer) {
     SurfaceInteraction hit;
-    if (!ctx.tracer.nearest_hit(ray, hit, counters, mailbox)) break;
+    if (!ctx.tracer.nearest_hit(ray, hit, counters, scratch.at(0).traversal)) break;
     if (layer == 0) out.depth = hit.t;
     ShadingPoint sp;
     sp.P = hit.P;
@@ -52,7 +53,7 @@ SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, Ray
 void render_tile_stochastic(const HiderContext& ctx, const PixelRect& rect, TileAccumulator& acc,
                             RayCounters& counters) {
   const int nx = ctx.samples_x, ny = ctx.samples_y;
-  Mailbox mailbox(ctx.scene.primitive_count());
+  RayScratchStack scratch(ctx.scene.accel);
   for (int py = rect.y0; py < rect.y1; ++py)
     for (int px = rect.x0; px < rect.x1; ++px)
       for (int sy = 0; sy < ny; ++sy)
@@ -63,7 +64,7 @@ void render_tile_stochastic(const HiderContext& ctx, const PixelRect& rect, Tile
           float y = py + (sy + rng.next_float()) / ny;
           Ray ray = ctx.scene.camera.generate_ray(x, y);
           ++counters.primary_rays;
-          SampleValue v = trace_camera_ray(ctx, ray, counters, mailbox);
+          SampleValue v = trace_camera_ray(ctx, ray, counters, scratch);
           acc.add_sample(x, y, {v.color.x, v.color.y, v.color.z, v.alpha}, v.depth);
         }
 }

@@ -5,6 +5,7 @@
 
 #include "core/scene.h"
 #include "integrator/film.h"
+#include "integrator/ray_scratch.h"
 #include "integrator/render_stats.h"
 #include "integrator/tracer.h"
 #include "shading/scene_shading.h"
@@ -29,6 +30,6 @@ struct SampleValue {
   float alpha = 0;
   float depth = 0;  // nearest hit distance (infinity when nothing was hit)
 };
-SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& ray, RayCounters& counters, Mailbox& mailbox);
+SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& ray, RayCounters& counters, RayScratchStack& scratch);
 
 }  // namespace darc

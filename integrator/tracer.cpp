@@ -16,28 +16,25 @@ T bezier(const T* c, float u) {
 
 Tracer::Tracer(const Scene& scene) : scene_(scene) {}
 
-bool Tracer::nearest_hit(const Ray& ray_in, SurfaceInteraction& out, RayCounters& counters, Mailbox& mailbox) const {
+bool Tracer::nearest_hit(const Ray& ray_in, SurfaceInteraction& out, RayCounters& counters,
+                         TraversalScratch& scratch) const {
   Ray ray = ray_in;
   bool found = false;
   const CurveSet& cs = scene_.curves;
-  mailbox.next_ray();
-  scene_.grid.traverse(ray, [&](std::span<const uint32_t> prims, float, float t_exit) {
-    ++counters.cells_visited;
-    for (uint32_t p : prims) {
-      if (!mailbox.first_visit(p)) continue;
+  counters.cells_visited += scene_.accel.nearest(ray, scratch, [&](uint32_t p, Ray&) {
       uint32_t local;
       const Scene::PrimKind kind = scene_.prim_kind(p, local);
       switch (kind) {
         case Scene::PrimKind::CurveSegment: {
           ++counters.segment_tests;
           CurveHit h;
-          if (!intersect_segment(cs, local, ray, h)) break;
+          if (!intersect_segment(cs, local, ray, h)) return;
           const Material& m = scene_.materials[cs.attribute_id[local]];
           Vec3f n = -ray.d;
           if (cs.oriented[local]) {
             n = normalize(lerp(h.u, cs.normal[2 * local], cs.normal[2 * local + 1]));
             if (m.flip_normals) n = -n;
-            if (m.sides == 1 && dot(n, ray.d) > 0) break;
+            if (m.sides == 1 && dot(n, ray.d) > 0) return;
           }
           out.t = h.t;
           out.P = h.p;
@@ -60,11 +57,11 @@ bool Tracer::nearest_hit(const Ray& ray_in, SurfaceInteraction& out, RayCounters
           SurfaceHit h;
           bool is_sphere = kind == Scene::PrimKind::Sphere;
           bool hit = is_sphere ? scene_.spheres[local].intersect(ray, h) : scene_.polygons[local].intersect(ray, h);
-          if (!hit) break;
+          if (!hit) return;
           uint32_t mi = is_sphere ? scene_.sphere_material[local] : scene_.polygon_material[local];
           const Material& m = scene_.materials[mi];
           Vec3f n = m.flip_normals ? -h.ng : h.ng;
-          if (m.sides == 1 && dot(n, ray.d) > 0) break;
+          if (m.sides == 1 && dot(n, ray.d) > 0) return;
           out.t = h.t;
           out.P = h.p;
           out.N = n;
@@ -81,9 +78,6 @@ bool Tracer::nearest_hit(const Ray& ray_in, SurfaceInteraction& out, RayCounters
           break;
         }
       }
-    }
-    // A hit inside this cell cannot be beaten by a later cell.
-    return !(found && ray.tmax <= t_exit);
   });
   return found;
 }

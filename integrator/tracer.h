@@ -1,5 +1,5 @@
-// Nearest-hit ray casting against a Scene (curves, spheres, polygons) through its uniform
-// grid, with exact hit/miss tests: the visibility query of the stochastic hider.
+// Nearest-hit ray casting against a Scene (curves, spheres, polygons) through its acceleration
+// structure's nearest-hit query, with exact hit/miss tests: the visibility query of the stochastic hider.
 #pragma once
 
 #include "core/scene.h"
@@ -28,8 +28,8 @@ class Tracer {
 
   // Nearest visible hit with t in (ray.tmin, ray.tmax). Sides 1 primitives seen from behind
   // are not visible. Counters are added to `counters`.
-  // `mailbox` (one per thread, sized for the scene's primitives) makes each primitive tested once.
-  bool nearest_hit(const Ray& ray, SurfaceInteraction& hit, RayCounters& counters, Mailbox& mailbox) const;
+  // `scratch` is the query's working memory (one per thread and ray depth).
+  bool nearest_hit(const Ray& ray, SurfaceInteraction& hit, RayCounters& counters, TraversalScratch& scratch) const;
 
  private:
   const Scene& scene_;

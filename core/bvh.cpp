@@ -1,0 +1,160 @@
+#include "core/bvh.h"
+
+#include <tbb/parallel_invoke.h>
+
+#include <array>
+#include <limits>
+
+namespace darc {
+
+namespace {
+
+// Bins per axis of the SAH sweep (Wald 2007 uses 16; more change the tree little).
+constexpr int kBins = 16;
+// Largest leaf. Curve tests cost far more than box tests, so leaves stay small; the SAH stops
+// splitting earlier only where a split gains nothing.
+constexpr uint32_t kMaxLeafSize = 4;
+// SAH costs: a box test relative to a primitive test (a curve segment's rejection costs a few
+// box tests; spheres and polygons about the same).
+constexpr float kTraversalCost = 0.5f;
+constexpr float kPrimitiveCost = 1.0f;
+// Subtrees with more primitives than this are built in parallel (their two children as tasks).
+constexpr uint32_t kParallelThreshold = 8192;
+
+bool valid_box(const BBox& b) {
+  for (int a = 0; a < 3; ++a)
+    if (!std::isfinite(b.lo[a]) || !std::isfinite(b.hi[a]) || b.lo[a] > b.hi[a]) return false;
+  return true;
+}
+
+float half_area(const BBox& b) {
+  if (b.empty()) return 0.0f;
+  Vec3f e = b.extent();
+  return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+struct Builder {
+  std::span<const BBox> boxes;
+  std::vector<Vec3f> centroids;
+  std::vector<uint32_t>& prims;
+
+  // Builds the subtree over prims[begin, end) into `out` (root at out[0], offsets relative to
+  // out[0]; leaf offsets are absolute indices into prims).
+  void build(uint32_t begin, uint32_t end, std::vector<BvhNode>& out) {
+    BBox box, cbox;
+    for (uint32_t i = begin; i < end; ++i) {
+      box.extend(boxes[prims[i]]);
+      cbox.extend(centroids[prims[i]]);
+    }
+    const uint32_t n = end - begin;
+    const size_t self = out.size();
+    out.push_back(BvhNode{box, begin, uint16_t(n), 0, 0});
+    if (n <= 1) return;
+    int axis = -1;
+    uint32_t mid = 0;
+    if (!choose_split(begin, end, box, cbox, axis, mid)) {
+      if (n <= kMaxLeafSize) return;
+      // No useful split (coincident centroids, or the SAH prefers a leaf that is too big):
+      // halve by index, which keeps leaves small and the tree deterministic.
+      axis = 0;
+      mid = begin + n / 2;
+    }
+    out[self].count = 0;
+    out[self].axis = uint8_t(axis);
+    if (n > kParallelThreshold) {
+      std::vector<BvhNode> left, right;
+      tbb::parallel_invoke([&] { build(begin, mid, left); }, [&] { build(mid, end, right); });
+      append(out, left);
+      out[self].offset = uint32_t(out.size() - self);
+      append(out, right);
+    } else {
+      build(begin, mid, out);
+      out[self].offset = uint32_t(out.size() - self);
+      build(mid, end, out);
+    }
+  }
+
+  // Appends a subtree built on its own (relative interior offsets stay valid).
+  static void append(std::vector<BvhNode>& out, const std::vector<BvhNode>& sub) {
+    out.insert(out.end(), sub.begin(), sub.end());
+  }
+
+  // The best binned SAH split of prims[begin, end); partitions the range and returns true when
+  // splitting beats a leaf (or the range is too large for one).
+  bool choose_split(uint32_t begin, uint32_t end, const BBox& box, const BBox& cbox, int& best_axis,
+                    uint32_t& mid) {
+    const uint32_t n = end - begin;
+    float best_cost = std::numeric_limits<float>::infinity();
+    int best_bin = -1;
+    best_axis = -1;
+    for (int axis = 0; axis < 3; ++axis) {
+      float lo = cbox.lo[axis], extent = cbox.hi[axis] - cbox.lo[axis];
+      if (!(extent > 0.0f)) continue;
+      float scale = float(kBins) / extent;
+      std::array<BBox, kBins> bin_box;
+      std::array<uint32_t, kBins> bin_count{};
+      for (uint32_t i = begin; i < end; ++i) {
+        int b = std::min(kBins - 1, int((centroids[prims[i]][axis] - lo) * scale));
+        bin_box[b].extend(boxes[prims[i]]);
+        ++bin_count[b];
+      }
+      // Sweep: cost of splitting after bin k = area(left) * count(left) + area(right) * count(right).
+      std::array<float, kBins> right_cost{};
+      BBox acc;
+      uint32_t count = 0;
+      for (int k = kBins - 1; k > 0; --k) {
+        acc.extend(bin_box[k]);
+        count += bin_count[k];
+        right_cost[k] = half_area(acc) * float(count);
+      }
+      acc = BBox{};
+      count = 0;
+      for (int k = 0; k < kBins - 1; ++k) {
+        acc.extend(bin_box[k]);
+        count += bin_count[k];
+        if (count == 0 || count == n) continue;
+        float cost = half_area(acc) * float(count) + right_cost[k + 1];
+        if (cost < best_cost) {
+          best_cost = cost;
+          best_bin = k;
+          best_axis = axis;
+        }
+      }
+    }
+    if (best_axis < 0) return false;
+    const float parent_area = half_area(box);
+    const float split_cost =
+        kTraversalCost + kPrimitiveCost * (parent_area > 0.0f ? best_cost / parent_area : float(n));
+    if (n <= kMaxLeafSize && split_cost >= kPrimitiveCost * float(n)) return false;
+    const float lo = cbox.lo[best_axis], scale = float(kBins) / (cbox.hi[best_axis] - lo);
+    auto in_left = [&](uint32_t p) {
+      return std::min(kBins - 1, int((centroids[p][best_axis] - lo) * scale)) <= best_bin;
+    };
+    // stable_partition keeps the index order inside each side: the tree is a pure function of
+    // the boxes.
+    uint32_t* first = prims.data() + begin;
+    mid = uint32_t(std::stable_partition(first, prims.data() + end, in_left) - prims.data());
+    return mid > begin && mid < end;
+  }
+};
+
+}  // namespace
+
+Bvh Bvh::build(std::span<const BBox> prim_bounds) {
+  Bvh bvh;
+  for (uint32_t i = 0; i < prim_bounds.size(); ++i)
+    if (valid_box(prim_bounds[i])) bvh.prims_.push_back(i);
+  if (bvh.prims_.empty()) return bvh;
+  Builder builder{prim_bounds, std::vector<Vec3f>(prim_bounds.size()), bvh.prims_};
+  for (uint32_t p : bvh.prims_) builder.centroids[p] = prim_bounds[p].center();
+  bvh.nodes_.reserve(2 * bvh.prims_.size());
+  builder.build(0, uint32_t(bvh.prims_.size()), bvh.nodes_);
+  // Offsets of interior nodes were relative to the node; make them absolute.
+  for (uint32_t i = 0; i < bvh.nodes_.size(); ++i)
+    if (bvh.nodes_[i].count == 0) bvh.nodes_[i].offset += i;
+  bvh.nodes_.shrink_to_fit();
+  bvh.prims_.shrink_to_fit();
+  return bvh;
+}
+
+}  // namespace darc
