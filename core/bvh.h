@@ -41,7 +41,10 @@ struct BvhQueueEntry {
 // The per-ray scratch of the walks (one per thread and ray depth; reused, never shared).
 struct BvhScratch {
   std::vector<uint32_t> stack;
-  std::vector<BvhQueueEntry> queue;  // a binary min-heap on t_lo
+  // Pending nodes of a footprint walk sorted by decreasing t_lo (the nearest at the back): a new
+  // entry is inserted by a short scan from the back, because children lie close behind the node
+  // just opened (cheaper than a binary heap at the queue lengths seen, 5-40).
+  std::vector<BvhQueueEntry> queue;
 };
 
 class Bvh {
@@ -112,9 +115,15 @@ inline void depth_range(const Ray& r, float inv_dd, const BBox& b, float& lo, fl
   hi = (std::max(px, qx) + std::max(py, qy) + std::max(pz, qz)) * inv_dd;
 }
 
-inline bool heap_less(const BvhQueueEntry& a, const BvhQueueEntry& b) {
-  // std heaps are max-heaps: the entry with the largest t_lo (then node) sinks.
-  return a.t_lo > b.t_lo || (a.t_lo == b.t_lo && a.node > b.node);
+// Inserts e into q kept sorted by decreasing (t_lo, node): the back is the nearest entry.
+inline void queue_insert(std::vector<BvhQueueEntry>& q, BvhQueueEntry e) {
+  q.push_back(e);
+  size_t i = q.size() - 1;
+  while (i > 0 && (q[i - 1].t_lo < e.t_lo || (q[i - 1].t_lo == e.t_lo && q[i - 1].node < e.node))) {
+    q[i] = q[i - 1];
+    --i;
+  }
+  q[i] = e;
 }
 
 }  // namespace bvh_detail
@@ -184,13 +193,11 @@ uint64_t Bvh::footprint_walk(Ray& ray, const RayFootprint& footprint, BvhScratch
     if (hi + slack < ray.tmin || lo - slack > ray.tmax) return;
     float t0;
     if (!bvh_detail::slab(sr, box, reach, ray.tmin, ray.tmax, t0)) return;
-    queue.push_back({lo - slack, index});
-    std::push_heap(queue.begin(), queue.end(), bvh_detail::heap_less);
+    bvh_detail::queue_insert(queue, {lo - slack, index});
   };
   offer(0);
   uint64_t visited = 0;
   while (!queue.empty()) {
-    std::pop_heap(queue.begin(), queue.end(), bvh_detail::heap_less);
     const BvhQueueEntry entry = queue.back();
     queue.pop_back();
     if (entry.t_lo > ray.tmax || !progress(entry.t_lo)) break;

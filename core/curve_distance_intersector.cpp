@@ -11,6 +11,10 @@ namespace darc {
 
 namespace {
 
+// sqrt(x^2 + y^2) without hypot's overflow care (libm's hypotf is a call and several times
+// slower; ray-space coordinates are far from float's range limits).
+inline float hypot2(float x, float y) { return std::sqrt(x * x + y * y); }
+
 // Leaves whose projected directions are within about 30 degrees are one piece of the strand.
 constexpr float kDistinctPieceCos = 0.866f;
 // Projected tangents shorter than this fraction of the width are "seen end-on": the strand's
@@ -35,7 +39,7 @@ struct DistanceState {
   float ray_length;
   float t_min, t_max;
   const RayFootprint* footprint;
-  RayFrame frame;
+  Vec3f frame_x, frame_y;  // the ray frame, its x axis along the segment's projected chord
   CoverageModel model;
   bool oriented;
   Vec3f normal0, normal1, dir;
@@ -68,12 +72,12 @@ struct DistanceState {
 
   FootprintAt footprint_at(float t_hit) const {
     FootprintAt f;
-    Vec3d ax(footprint->axis_x(t_hit)), ay(footprint->axis_y(t_hit));
-    f.ax_x = float(dot(ax, frame.x));
-    f.ax_y = float(dot(ax, frame.y));
-    f.ay_x = float(dot(ay, frame.x));
-    f.ay_y = float(dot(ay, frame.y));
-    float lx = std::hypot(f.ax_x, f.ax_y), ly = std::hypot(f.ay_x, f.ay_y);
+    Vec3f ax = footprint->axis_x(t_hit), ay = footprint->axis_y(t_hit);
+    f.ax_x = dot(ax, frame_x);
+    f.ax_y = dot(ax, frame_y);
+    f.ay_x = dot(ay, frame_x);
+    f.ay_y = dot(ay, frame_y);
+    float lx = hypot2(f.ax_x, f.ax_y), ly = hypot2(f.ay_x, f.ay_y);
     // The box form's radius is half the sample spacing; the disc has the square's area.
     f.r_box = std::max(0.25f * (lx + ly), footprint->min_radius);
     f.r_disc = std::max(std::sqrt(lx * ly / std::numbers::pi_v<float>), footprint->min_radius);
@@ -128,7 +132,7 @@ float end_falloff(const DistanceState& s, const FootprintAt& f, float e, float t
 
 // Unit 2D direction of a ray-space vector, false when it is too short to have one.
 bool unit_2d(const Vec3f& v, float min_length, float& x, float& y) {
-  float l = std::hypot(v.x, v.y);
+  float l = hypot2(v.x, v.y);
   if (!(l > min_length)) return false;
   x = v.x / l;
   y = v.y / l;
@@ -183,7 +187,7 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
   Vec3f pc = bezier_evaluate(cp, w);
   float t = pc.z / s.ray_length;
   if (!(t > s.t_min && t < s.t_max)) return;
-  float d = std::hypot(pc.x, pc.y);
+  float d = hypot2(pc.x, pc.y);
   FootprintAt f = s.footprint_at(t);
   float tx = 1.0f, ty = 0.0f;
   if (!unit_2d(bezier_derivative(cp, w), 0.0f, tx, ty) && !unit_2d(cp[3] - cp[0], 0.0f, tx, ty)) {
@@ -284,7 +288,7 @@ void distance_recursive(const Vec3f cp[4], const float width[4], float u0, float
 // Where the end is out of the footprint's reach, the footprint is wholly on one side of the
 // end's line for a straight strand anyway, so skipping the fall-off there changes nothing.
 bool end_within_reach(const Vec3f& end, float half_width, const DistanceState& s) {
-  return std::hypot(end.x, end.y) <= half_width + s.reach_at_depth(end.z + half_width);
+  return hypot2(end.x, end.y) <= half_width + s.reach_at_depth(end.z + half_width);
 }
 
 bool finite3(const Vec3f& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -306,50 +310,87 @@ SegmentEnds segment_ends(const CurveSet& set, size_t i) {
   return e;
 }
 
+DistanceRay make_distance_ray(const Ray& ray, const RayFootprint& footprint) {
+  DistanceRay r;
+  if (!finite3(ray.o) || !finite3(ray.d) || std::isnan(ray.tmin) || std::isnan(ray.tmax)) return r;
+  // The frame in double, once per ray: it is reused for every segment.
+  Vec3d dir(ray.d);
+  double ray_length = length(dir);
+  if (!(ray_length > 0.0) || !std::isfinite(ray_length)) return r;
+  dir = dir / ray_length;
+  Vec3d x, y;
+  orthonormal_basis(dir, x, y);
+  r.valid = true;
+  r.origin = ray.o;
+  r.dir = Vec3f(dir);
+  r.frame_x = Vec3f(x);
+  r.frame_y = Vec3f(cross(dir, x));
+  r.ray_length = float(ray_length);
+  r.t_min = ray.tmin;
+  r.t_max = ray.tmax;
+  r.reach0 = footprint.reach(0.0f);
+  r.reach1 = footprint.reach(1.0f) - r.reach0;
+  r.footprint = &footprint;
+  return r;
+}
+
 bool intersect_segment_distance(const CurveSet& set, size_t segment, const Ray& ray, const RayFootprint& footprint,
                                 CoverageModel model, SegmentEnds ends, CurveFragmentHit& hit, bool compute_mask) {
+  return intersect_segment_distance(set, segment, make_distance_ray(ray, footprint), model, ends, hit,
+                                    compute_mask);
+}
+
+bool intersect_segment_distance(const CurveSet& set, size_t segment, const DistanceRay& ray, CoverageModel model,
+                                SegmentEnds ends, CurveFragmentHit& hit, bool compute_mask) {
+  if (!ray.valid) return false;
   const Vec3f* cp = set.control_points(segment);
   const float* width = set.widths(segment);
   float hw = half_max_width(width);
   if (!(hw > 0.0f)) return false;
-  if (!finite3(ray.o) || !finite3(ray.d) || std::isnan(ray.tmin) || std::isnan(ray.tmax)) return false;
-  {
-    float reach0 = footprint.reach(0.0f);
-    if (!bounding_sphere_may_hit(cp, hw, ray, reach0, footprint.reach(1.0f) - reach0)) return false;
+  // The control points in the ray's frame: depth along the ray, and 2D across it.
+  float z[4], a[4], b[4];
+  for (int i = 0; i < 4; ++i) {
+    Vec3f rel = cp[i] - ray.origin;
+    z[i] = dot(rel, ray.dir);
+    a[i] = dot(rel, ray.frame_x);
+    b[i] = dot(rel, ray.frame_y);
   }
-  Vec3d dir(ray.d);
-  double ray_length = length(dir);
-  if (!(ray_length > 0.0)) return false;
-  dir = dir / ray_length;
-
-  Vec3d origin(ray.o);
-  Vec3d rel[4];
-  for (int i = 0; i < 4; ++i) rel[i] = Vec3d(cp[i]) - origin;
-  DistanceState s;
-  s.frame = make_ray_frame(dir, rel[3] - rel[0]);
+  // Depth rejection first (cheapest): the hull's depth range against the ray's interval.
+  float z_hi = std::max(std::max(z[0], z[1]), std::max(z[2], z[3]));
+  float z_lo = std::min(std::min(z[0], z[1]), std::min(z[2], z[3]));
+  const float reach_far = ray.reach0 + ray.reach1 * std::max(0.0f, (z_hi + hw) / ray.ray_length);
+  const float margin = hw + reach_far;
+  if (z_hi + margin < ray.t_min * ray.ray_length || z_lo - margin > ray.t_max * ray.ray_length) return false;
+  // Turn the frame in its plane so that x runs along the projected chord: the hull is then thin
+  // in y and its bound tight (Nakamaru & Ohno's frame). A chord seen end-on keeps the frame.
+  float cx = a[3] - a[0], cy = b[3] - b[0];
+  float chord_2d = std::sqrt(cx * cx + cy * cy);
+  Vec3f chord = cp[3] - cp[0];
+  float cos_r = 1.0f, sin_r = 0.0f;
+  if (chord_2d > float(kParallelSine) * length(chord) && chord_2d > 0.0f) {
+    cos_r = cx / chord_2d;
+    sin_r = cy / chord_2d;
+  }
   Vec3f ray_cp[4];
-  for (int i = 0; i < 4; ++i) ray_cp[i] = s.frame.to_ray_space(rel[i]);
+  for (int i = 0; i < 4; ++i) ray_cp[i] = {cos_r * a[i] + sin_r * b[i], -sin_r * a[i] + cos_r * b[i], z[i]};
+  if (!bound_overlaps_ray(ray_cp, margin, ray.t_min * ray.ray_length, ray.t_max * ray.ray_length)) return false;
 
-  s.ray_length = float(ray_length);
-  s.t_min = ray.tmin;
-  s.t_max = ray.tmax;
-  s.footprint = &footprint;
+  DistanceState s;
+  s.frame_x = ray.frame_x * cos_r + ray.frame_y * sin_r;
+  s.frame_y = ray.frame_y * cos_r - ray.frame_x * sin_r;
+  s.ray_length = ray.ray_length;
+  s.t_min = ray.t_min;
+  s.t_max = ray.t_max;
+  s.footprint = ray.footprint;
   s.model = model;
   s.oriented = !set.oriented.empty() && set.oriented[segment] != 0;
   if (s.oriented) {
     s.normal0 = set.normal[segment * kNormalsPerSegment];
     s.normal1 = set.normal[segment * kNormalsPerSegment + 1];
   }
-  s.dir = Vec3f(dir);
-  // reach(t) in terms of the ray parameter (footprints are given per unit of t).
-  s.reach0 = footprint.reach(0.0f);
-  s.reach1 = footprint.reach(1.0f) - s.reach0;
-
-  float z_hi = std::max(std::max(ray_cp[0].z, ray_cp[1].z), std::max(ray_cp[2].z, ray_cp[3].z));
-  float z_lo = std::min(std::min(ray_cp[0].z, ray_cp[1].z), std::min(ray_cp[2].z, ray_cp[3].z));
-  if (!bound_overlaps_ray(ray_cp, hw + s.reach_at_depth(z_hi + hw), s.t_min * s.ray_length,
-                          s.t_max * s.ray_length))
-    return false;
+  s.dir = ray.dir;
+  s.reach0 = ray.reach0;
+  s.reach1 = ray.reach1;
 
   EndFalloff fall;
   float min_tangent = kEndOnTangentFraction * 2.0f * hw;

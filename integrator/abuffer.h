@@ -49,6 +49,7 @@ class ABuffer {
     nearest_pending_ = std::numeric_limits<float>::infinity();
     color_ = {};
     point_transmittance_.fill(Vec3f{1, 1, 1});
+    transmittance_sum_ = Vec3f{1, 1, 1} * float(kPoints);
     peak_ = 0;
     added_ = 0;
   }
@@ -107,12 +108,9 @@ class ABuffer {
   float nearest_pending() const { return nearest_pending_; }
 
   const Vec3f& color() const { return color_; }
-  // The mean transmittance over the footprint.
-  Vec3f transmittance() const {
-    Vec3f sum;
-    for (const Vec3f& t : point_transmittance_) sum += t;
-    return sum * (1.0f / kPoints);
-  }
+  // The mean transmittance over the footprint (kept up to date while compositing: asking for it
+  // after every composite costs no pass over the points).
+  Vec3f transmittance() const { return transmittance_sum_ * (1.0f / kPoints); }
   size_t peak_length() const { return peak_; }
   size_t fragments_added() const { return added_; }
 
@@ -150,16 +148,18 @@ class ABuffer {
       in_mask = k > 0 ? std::min(1.0f, c / k) : 0.0f;
       out_mask = k < kPoints ? std::max(0.0f, (c - k * in_mask) / (kPoints - k)) : 0.0f;
     }
-    const Vec3f one{1, 1, 1};
-    Vec3f sum;
+    Vec3f sum, lost;
     for (int b = 0; b < kPoints; ++b) {
       float o = (mask >> b) & 1 ? in_mask : out_mask;
       if (o == 0.0f) continue;
       Vec3f& t = point_transmittance_[b];
       sum += mul(t, s.Ci) * o;
-      t = mul(t, one - s.Oi * o);
+      Vec3f absorbed = mul(t, s.Oi * o);
+      t -= absorbed;
+      lost += absorbed;
     }
     color_ += sum * (1.0f / kPoints);
+    transmittance_sum_ -= lost;
   }
 
   template <class Shade>
@@ -179,6 +179,7 @@ class ABuffer {
   std::vector<Fragment> pending_;
   float nearest_pending_ = std::numeric_limits<float>::infinity();
   static constexpr int kPoints = kMaskSide * kMaskSide;
+  Vec3f transmittance_sum_ = Vec3f{1, 1, 1} * float(kPoints);
   Vec3f color_;
   std::array<Vec3f, kPoints> point_transmittance_ = [] {
     std::array<Vec3f, kPoints> a;

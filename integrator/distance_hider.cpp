@@ -99,6 +99,7 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
     return {r.Ci, r.Oi};
   };
 
+  DistanceRay distance_ray = make_distance_ray(ray, footprint);
   auto visit = [&](uint32_t p) {
       uint32_t local;
       const Scene::PrimKind kind = scene.prim_kind(p, local);
@@ -110,7 +111,7 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
           // through: the A-buffer adds the pieces of a strand up (SegmentEnds::cut_joints).
           SegmentEnds ends = ctx.ends[local];
           ends.cut_joints = true;
-          if (!intersect_segment_distance(cs, local, ray, footprint, ctx.settings.coverage, ends, h,
+          if (!intersect_segment_distance(cs, local, distance_ray, ctx.settings.coverage, ends, h,
                                           ctx.settings.coverage_masks))
             return;
           const Material& m = scene.materials[cs.attribute_id[local]];
@@ -141,7 +142,10 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
           abuffer.add(f, shade);
           nearest = std::min(nearest, sf.t);
           // Nothing behind an opaque surface that covers the whole footprint can be seen.
-          if (sf.coverage == 1.0f && m.opacity == Vec3f{1, 1, 1}) ray.tmax = std::min(ray.tmax, sf.t);
+          if (sf.coverage == 1.0f && m.opacity == Vec3f{1, 1, 1}) {
+            ray.tmax = std::min(ray.tmax, sf.t);
+            distance_ray.t_max = ray.tmax;
+          }
           break;
         }
       }

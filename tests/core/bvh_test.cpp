@@ -1,0 +1,199 @@
+// The BVH against brute force over random boxes and rays: the footprint walk visits every box
+// within the footprint's reach of the ray, each once, and keeps its t_final promise; the nearest
+// walk finds the nearest box hit; the tree covers every valid box once; degenerate inputs.
+#include "core/bvh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <random>
+#include <vector>
+
+namespace darc {
+namespace {
+
+constexpr int kBoxes = 400;
+constexpr int kRays = 300;
+// Steps of the brute-force scan along the ray (over [tmin, kScanLength]).
+constexpr int kScanSteps = 2000;
+constexpr float kScanLength = 60.0f;
+// A box counts as "within reach" only with this margin, so the brute force's rounding never
+// decides a test.
+constexpr double kReachMargin = 1e-3;
+
+double box_distance(const BBox& b, const Vec3d& p) {
+  Vec3d lo(b.lo), hi(b.hi);
+  Vec3d q{std::clamp(p.x, lo.x, hi.x), std::clamp(p.y, lo.y, hi.y), std::clamp(p.z, lo.z, hi.z)};
+  return length(p - q);
+}
+
+// The smallest scanned t at which the box is within the footprint reach of the ray, or -1.
+double first_t_within_reach(const BBox& b, const Ray& ray, const RayFootprint& fp) {
+  for (int i = 0; i <= kScanSteps; ++i) {
+    double t = double(ray.tmin) + (kScanLength - ray.tmin) * i / kScanSteps;
+    if (t > ray.tmax) break;
+    if (box_distance(b, Vec3d(ray.o) + Vec3d(ray.d) * t) <= fp.reach(float(t)) - kReachMargin) return t;
+  }
+  return -1;
+}
+
+std::vector<BBox> random_boxes(std::mt19937& rng) {
+  std::uniform_real_distribution<float> pos(0.0f, 10.0f), size(0.0f, 1.2f);
+  std::vector<BBox> boxes;
+  for (int i = 0; i < kBoxes; ++i) {
+    Vec3f lo{pos(rng), pos(rng), pos(rng)};
+    boxes.push_back(BBox{lo, lo + Vec3f{size(rng), size(rng), size(rng)}});
+  }
+  return boxes;
+}
+
+void random_ray(std::mt19937& rng, Ray& ray, RayFootprint& fp) {
+  std::uniform_real_distribution<float> around(-6.0f, 16.0f), inside(0.0f, 10.0f), small(-0.05f, 0.05f),
+      growth(-0.03f, 0.03f);
+  ray.o = Vec3f{around(rng), around(rng), around(rng)};
+  Vec3f target{inside(rng), inside(rng), inside(rng)};
+  ray.d = normalize(target - ray.o);
+  fp.dox = Vec3f{small(rng), small(rng), 0};
+  fp.doy = Vec3f{0, small(rng), small(rng)};
+  fp.ddx = Vec3f{growth(rng), growth(rng), 0};
+  fp.ddy = Vec3f{growth(rng), 0, growth(rng)};
+}
+
+TEST(Bvh, EveryValidBoxIsInExactlyOneLeaf) {
+  std::mt19937 rng(1);
+  std::vector<BBox> boxes = random_boxes(rng);
+  boxes[7] = BBox{};                                                  // empty: left out
+  boxes[9] = BBox{{0, 0, 0}, {std::numeric_limits<float>::infinity(), 1, 1}};  // non-finite: left out
+  Bvh bvh = Bvh::build(boxes);
+  std::vector<int> seen(boxes.size(), 0);
+  for (const BvhNode& n : bvh.nodes()) {
+    if (n.count == 0) continue;
+    for (uint32_t i = n.offset; i < n.offset + n.count; ++i) {
+      uint32_t p = bvh.primitives()[i];
+      ++seen[p];
+      // The leaf's box holds its primitives' boxes.
+      EXPECT_LE(n.box.lo.x, boxes[p].lo.x);
+      EXPECT_GE(n.box.hi.z, boxes[p].hi.z);
+    }
+  }
+  for (size_t p = 0; p < boxes.size(); ++p) EXPECT_EQ(seen[p], (p == 7 || p == 9) ? 0 : 1) << p;
+}
+
+TEST(Bvh, FootprintWalkVisitsEveryBoxWithinReachOnceAndKeepsTheTFinalPromise) {
+  std::mt19937 rng(2);
+  std::vector<BBox> boxes = random_boxes(rng);
+  Bvh bvh = Bvh::build(boxes);
+  BvhScratch scratch;
+  int within_reach = 0;
+  for (int r = 0; r < kRays; ++r) {
+    Ray ray;
+    RayFootprint fp;
+    random_ray(rng, ray, fp);
+    std::map<uint32_t, int> visits;
+    std::map<uint32_t, float> promised_before;  // the last t_final announced before the first visit
+    float last_t_final = -std::numeric_limits<float>::infinity();
+    bool monotone = true;
+    bvh.footprint_walk(
+        ray, fp, scratch,
+        [&](uint32_t p) {
+          if (visits[p]++ == 0) promised_before[p] = last_t_final;
+        },
+        [&](float t_final) {
+          monotone = monotone && t_final >= last_t_final;
+          last_t_final = t_final;
+          return true;
+        });
+    EXPECT_TRUE(monotone) << "ray " << r;
+    for (uint32_t b = 0; b < boxes.size(); ++b) {
+      double t_first = first_t_within_reach(boxes[b], ray, fp);
+      if (visits.count(b)) {
+        EXPECT_EQ(visits[b], 1) << "ray " << r << " box " << b;
+      }
+      if (t_first < 0) continue;
+      ++within_reach;
+      ASSERT_TRUE(visits.count(b)) << "ray " << r << " box " << b << " within reach at t=" << t_first;
+      // Promised final before its visit would be a broken promise.
+      EXPECT_LE(promised_before[b], t_first) << "ray " << r << " box " << b;
+    }
+  }
+  EXPECT_GT(within_reach, kRays);  // the test exercises many boxes
+}
+
+TEST(Bvh, StoppingAtProgressStopsTheWalk) {
+  std::vector<BBox> boxes;
+  for (int i = 0; i < 64; ++i) boxes.push_back(BBox{Vec3f{float(i), 0, 0}, Vec3f{i + 0.5f, 0.5f, 0.5f}});
+  Bvh bvh = Bvh::build(boxes);
+  BvhScratch scratch;
+  Ray ray{{-1, 0.25f, 0.25f}, {1, 0, 0}};
+  int steps = 0, visited = 0;
+  bvh.footprint_walk(
+      ray, RayFootprint{}, scratch, [&](uint32_t) { ++visited; }, [&](float) { return ++steps < 3; });
+  EXPECT_EQ(steps, 3);
+  EXPECT_LT(visited, 64);
+}
+
+TEST(Bvh, NearestWalkFindsTheNearestBoxHit) {
+  std::mt19937 rng(4);
+  std::vector<BBox> boxes = random_boxes(rng);
+  Bvh bvh = Bvh::build(boxes);
+  BvhScratch scratch;
+  for (int r = 0; r < kRays; ++r) {
+    Ray ray;
+    RayFootprint unused;
+    random_ray(rng, ray, unused);
+    float brute = std::numeric_limits<float>::infinity();
+    for (const BBox& b : boxes) {
+      float t0, t1;
+      if (b.intersect(ray, t0, t1)) brute = std::min(brute, t0);
+    }
+    Ray walk = ray;
+    float found = std::numeric_limits<float>::infinity();
+    bvh.nearest(walk, scratch, [&](uint32_t p, Ray& rr) {
+      float t0, t1;
+      if (boxes[p].intersect(rr, t0, t1) && t0 < found) {
+        found = t0;
+        rr.tmax = t0;  // a hit shortens the ray, as a primitive test does
+      }
+    });
+    EXPECT_EQ(found, brute) << "ray " << r;
+  }
+}
+
+TEST(Bvh, EmptyAndDegenerateInputsVisitNothing) {
+  Bvh empty = Bvh::build({});
+  BvhScratch scratch;
+  int calls = 0;
+  Ray ray{{0, 0, 0}, {0, 0, 1}};
+  EXPECT_EQ(empty.footprint_walk(
+                ray, RayFootprint{}, scratch, [&](uint32_t) { ++calls; }, [](float) { return true; }),
+            0u);
+  std::mt19937 rng(3);
+  Bvh bvh = Bvh::build(random_boxes(rng));
+  for (Vec3f d : {Vec3f{0, 0, 0}, Vec3f{std::nanf(""), 0, 1}, Vec3f{-1, 0, 0}}) {
+    Ray r{{-5, 5, 5}, d};
+    bvh.footprint_walk(
+        r, RayFootprint{}, scratch, [&](uint32_t) { ++calls; }, [](float) { return true; });
+  }
+  EXPECT_EQ(calls, 0);
+}
+
+TEST(Bvh, BuildIsAPureFunctionOfTheBoxes) {
+  std::mt19937 rng(5);
+  std::vector<BBox> boxes;
+  // Enough boxes to take the parallel path (subtrees over the parallel threshold).
+  for (int k = 0; k < 60; ++k) {
+    std::vector<BBox> more = random_boxes(rng);
+    boxes.insert(boxes.end(), more.begin(), more.end());
+  }
+  Bvh a = Bvh::build(boxes), b = Bvh::build(boxes);
+  ASSERT_EQ(a.nodes().size(), b.nodes().size());
+  EXPECT_TRUE(std::equal(a.primitives().begin(), a.primitives().end(), b.primitives().begin()));
+  for (size_t i = 0; i < a.nodes().size(); ++i) {
+    EXPECT_EQ(a.nodes()[i].offset, b.nodes()[i].offset);
+    EXPECT_EQ(a.nodes()[i].count, b.nodes()[i].count);
+  }
+}
+
+}  // namespace
+}  // namespace darc
