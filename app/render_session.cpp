@@ -1,5 +1,7 @@
 #include "app/render_session.h"
 
+#include "app/process_memory.h"
+
 #include "app/progress_reporter.h"
 #include "core/scene_builder.h"
 #include "integrator/color_config.h"
@@ -55,11 +57,22 @@ nlohmann::json counters_json(const RayCounters& c) {
           {"secondary_rays", c.secondary_rays},
           {"curve_segment_tests", c.segment_tests},
           {"surface_tests", c.surface_tests},
-          {"grid_cells_visited", c.cells_visited},
+          {"grid_cells_visited", c.cells_visited},  // grid cells or BVH nodes: the accelerator's steps
           {"rays_terminated_early", c.rays_terminated_early},
           {"fragments", c.fragments},
           {"peak_abuffer_length", c.peak_fragments},
           {"rays_pruned_by_contribution", c.pruned_rays}};
+}
+
+// Where the scene's memory goes: the curve segments, the acceleration structure, and the
+// process's peak resident size so far (parsing, building and rendering included).
+nlohmann::json memory_json(const Scene& scene) {
+  const size_t segments = scene.curves.size();
+  const size_t curve_bytes = scene.curves.memory_bytes(), accel_bytes = scene.accel.memory_bytes();
+  return {{"curve_bytes", curve_bytes},
+          {"accelerator_bytes", accel_bytes},
+          {"bytes_per_segment", segments ? double(curve_bytes + accel_bytes) / double(segments) : 0.0},
+          {"peak_resident_bytes", peak_resident_bytes()}};
 }
 
 }  // namespace
@@ -166,6 +179,8 @@ int run_render_session(const AppOptions& o) {
                             {"resolution", {scene.output.xres, scene.output.yres}},
                             {"pixel_samples", {scene.output.pixel_samples[0], scene.output.pixel_samples[1]}},
                             {"curve_segments", scene.curves.size()},
+                            {"accelerator", to_string(scene.accel.kind())},
+                            {"memory", memory_json(scene)},
                             {"parse_seconds", stats.parse_seconds},
                             {"build_seconds", stats.build_seconds},
                             {"render_seconds", stats.render_seconds},

@@ -160,7 +160,7 @@ WorldTransform make_world_transform(const Matrix4& object_to_world) {
 
 // Appends one segment; returns false (appending nothing) when it is degenerate or not finite.
 bool append_segment(CurveSet& set, const CurvesInput& input, const SegmentRef& s, const BezierConversion& conversion,
-                    const WorldTransform& xf) {
+                    const WorldTransform& xf, uint32_t strand, uint32_t attribute_id) {
   // Convert in object space first: Hermite tangents and power coefficients are not points, so
   // only the resulting Bézier control points may be transformed as points.
   std::array<Vec3d, 4> object_cp;
@@ -186,12 +186,13 @@ bool append_segment(CurveSet& set, const CurvesInput& input, const SegmentRef& s
   for (float w : world_width)
     if (!std::isfinite(w)) return false;
 
-  auto colour = [&](const std::optional<PrimvarInput>& pv, const Vec3f& fallback, std::vector<Vec3f>& out) {
+  auto colour = [&](const std::optional<PrimvarInput>& pv, const Vec3f& fallback, std::array<Vec3f, 4>& out) {
     if (!pv) {
-      for (int i = 0; i < 4; ++i) out.push_back(fallback);
+      out.fill(fallback);
       return;
     }
-    for (const Vec3d& c : primvar_bezier3(*pv, s, input.cubic, conversion)) out.push_back(Vec3f(c));
+    std::array<Vec3d, 4> c = primvar_bezier3(*pv, s, input.cubic, conversion);
+    for (int i = 0; i < 4; ++i) out[i] = Vec3f(c[i]);
   };
 
   // Normals at the segment ends: the Bézier form's end coefficients are the end values.
@@ -206,13 +207,11 @@ bool append_segment(CurveSet& set, const CurvesInput& input, const SegmentRef& s
   }
   bool oriented = length_squared(n0) > 0.0f;
 
-  set.cp.insert(set.cp.end(), cp.begin(), cp.end());
-  set.width.insert(set.width.end(), world_width.begin(), world_width.end());
-  colour(input.Cs, input.default_cs, set.cs);
-  colour(input.Os, input.default_os, set.os);
-  set.normal.push_back(n0);
-  set.normal.push_back(n1);
-  set.oriented.push_back(oriented ? 1 : 0);
+  SegmentShading colours;
+  colour(input.Cs, input.default_cs, colours.cs);
+  colour(input.Os, input.default_os, colours.os);
+  const Vec3f normals[2] = {n0, n1};
+  set.add_segment(cp, world_width, strand, attribute_id, colours, oriented ? normals : nullptr);
   return true;
 }
 
@@ -272,6 +271,7 @@ void append_curves(CurveSet& set, const CurvesInput& input, uint32_t attribute_i
   BezierConversion conversion = bezier_conversion(input.basis);
   WorldTransform xf = make_world_transform(input.object_to_world);
   size_t vertex_base = 0, varying_base = 0;
+  const size_t first_segment = set.size();
   for (size_t c = 0; c < input.nvertices.size(); ++c) {
     int nv = input.nvertices[c];
     size_t nsegs = segments_in_curve(topology, nv);
@@ -281,14 +281,12 @@ void append_curves(CurveSet& set, const CurvesInput& input, uint32_t attribute_i
       size_t first = input.cubic ? k * static_cast<size_t>(topology.step) : k;
       size_t controls = input.cubic ? 4 : 2;
       for (size_t j = 0; j < controls; ++j) s.vertex[j] = vertex_base + (first + j) % static_cast<size_t>(nv);
-      if (!append_segment(set, input, s, conversion, xf)) continue;
-      set.strand_id.push_back(strand);
-      set.segment_in_strand.push_back(static_cast<uint32_t>(k));
-      set.attribute_id.push_back(attribute_id);
+      append_segment(set, input, s, conversion, xf, strand, attribute_id);
     }
     vertex_base += static_cast<size_t>(nv);
     varying_base += nsegs + (input.periodic ? 0 : 1);
   }
+  set.mark_strand_ends(first_segment);
 }
 
 }  // namespace darc

@@ -297,16 +297,8 @@ bool finite3(const Vec3f& v) { return std::isfinite(v.x) && std::isfinite(v.y) &
 
 SegmentEnds segment_ends(const CurveSet& set, size_t i) {
   SegmentEnds e;
-  uint32_t id = set.strand_id[i];
-  e.strand_start = i == 0 || set.strand_id[i - 1] != id;
-  e.strand_end = i + 1 == set.size() || set.strand_id[i + 1] != id;
-  if (e.strand_start || e.strand_end) {
-    // A closed (periodic) strand has no ends: its first point meets its last.
-    size_t first = i, last = i;
-    while (first > 0 && set.strand_id[first - 1] == id) --first;
-    while (last + 1 < set.size() && set.strand_id[last + 1] == id) ++last;
-    if (set.control_points(first)[0] == set.control_points(last)[3]) e.strand_start = e.strand_end = false;
-  }
+  e.strand_start = set.strand_start(i);
+  e.strand_end = set.strand_end(i);
   return e;
 }
 
@@ -383,10 +375,10 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   s.t_max = ray.t_max;
   s.footprint = ray.footprint;
   s.model = model;
-  s.oriented = !set.oriented.empty() && set.oriented[segment] != 0;
+  s.oriented = set.oriented(segment);
   if (s.oriented) {
-    s.normal0 = set.normal[segment * kNormalsPerSegment];
-    s.normal1 = set.normal[segment * kNormalsPerSegment + 1];
+    s.normal0 = set.end_normal(segment, 0);
+    s.normal1 = set.end_normal(segment, 1);
   }
   s.dir = ray.dir;
   s.reach0 = ray.reach0;

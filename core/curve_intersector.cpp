@@ -156,10 +156,10 @@ bool intersect_segment(const CurveSet& set, size_t segment, const Ray& ray, Curv
   s.ray_length = static_cast<float>(ray_length);
   s.t_min = ray.tmin;
   s.t_best = ray.tmax;
-  s.oriented = !set.oriented.empty() && set.oriented[segment] != 0;
+  s.oriented = set.oriented(segment);
   if (s.oriented) {
-    s.normal0 = set.normal[segment * kNormalsPerSegment];
-    s.normal1 = set.normal[segment * kNormalsPerSegment + 1];
+    s.normal0 = set.end_normal(segment, 0);
+    s.normal1 = set.end_normal(segment, 1);
   }
   s.dir = Vec3f(dir);
   if (!bound_overlaps_ray(ray_cp, margin, s.t_min * s.ray_length, s.t_best * s.ray_length)) return false;

@@ -8,6 +8,7 @@
 #include "core/scene.h"
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,7 +36,9 @@ struct Attributes {
   Vec3f color{1, 1, 1};
   Vec3f opacity{1, 1, 1};
   std::string surface = "defaultsurface";
-  ParamList surface_params;
+  // Shared, never changed once set: AttributeBegin copies a pointer, not the list, and every
+  // primitive made in one attribute state refers to the same list.
+  std::shared_ptr<const ParamList> surface_params = std::make_shared<const ParamList>();
   SourceLoc surface_loc;
   int sides = 2;
   bool orientation_lh = true;  // RI default "outside" in the (left-handed) camera space
@@ -44,7 +47,7 @@ struct Attributes {
   bool matte = false;
   std::vector<uint32_t> lights_on;  // scene light indices
   std::string area_light;
-  ParamList area_light_params;
+  std::shared_ptr<const ParamList> area_light_params = std::make_shared<const ParamList>();
 };
 
 }  // namespace darc

@@ -3,6 +3,7 @@
 namespace darc {
 
 void Scene::build_acceleration(AcceleratorKind kind) {
+  curves.shrink_to_fit();  // the scene is complete: no more segments
   std::vector<BBox> boxes;
   boxes.reserve(primitive_count());
   for (size_t i = 0; i < curves.size(); ++i) boxes.push_back(curves.segment_bounds(i));

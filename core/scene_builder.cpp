@@ -104,6 +104,7 @@ void SceneBuilder::world_begin(const SourceLoc& loc) {
 
 void SceneBuilder::start_scene() {
   scene_ = std::make_unique<Scene>();
+  material_ids_.clear();
   Scene& s = *scene_;
   OutputSettings out = options_.output;
   if (overrides_.xres > 0) {
@@ -474,7 +475,7 @@ void SceneBuilder::opacity(const std::array<float, 3>& rgb, const SourceLoc& loc
 void SceneBuilder::surface(const std::string& name, const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.surface(name, params, loc); })) return;
   attributes_.surface = name;
-  attributes_.surface_params = params;
+  attributes_.surface_params = std::make_shared<const ParamList>(params);
   attributes_.surface_loc = loc;
 }
 
@@ -510,7 +511,7 @@ void SceneBuilder::area_light_source(const std::string& name, const std::string&
   diag_.warning_once("arealight", loc, "AreaLightSource",
                      "area lights do not illuminate other objects in darc: their geometry is drawn emissive");
   attributes_.area_light = name;
-  attributes_.area_light_params = params;
+  attributes_.area_light_params = std::make_shared<const ParamList>(params);
 }
 
 void SceneBuilder::illuminate(const std::string& handle, bool on, const SourceLoc& loc) {

@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace darc {
@@ -160,6 +161,26 @@ class SceneBuilder : public RiTarget {
   int frames_ready_ = 0, frames_failed_ = 0;
 
   std::unique_ptr<Scene> scene_;  // the frame being built (inside the world block)
+  // The attribute state a material was made from (make_material interns materials by it). The
+  // key holds its parameter lists, so that an address is never reused by another list while it
+  // is a key.
+  struct MaterialKey {
+    std::string surface;
+    std::shared_ptr<const ParamList> surface_params;
+    Vec3f color, opacity;
+    int sides;
+    bool flip_normals, matte;
+    std::vector<uint32_t> lights;
+    std::string area_light;
+    std::shared_ptr<const ParamList> area_light_params;
+    auto tie() const {
+      return std::make_tuple(std::cref(surface), surface_params.get(), color.x, color.y, color.z, opacity.x, opacity.y, opacity.z, sides,
+                      flip_normals, matte, std::cref(lights), std::cref(area_light),
+                             area_light_params.get());
+    }
+    bool operator<(const MaterialKey& o) const { return tie() < o.tie(); }
+  };
+  std::map<MaterialKey, uint32_t> material_ids_;  // this frame's materials
   Matrix4 camera_to_world_;
   std::map<std::string, Matrix4> named_spaces_;  // CoordinateSystem, relative to world
   std::map<std::string, uint32_t> light_handles_;

@@ -17,20 +17,32 @@ bool SceneBuilder::building_geometry(const char* request, const SourceLoc& loc) 
 }
 
 uint32_t SceneBuilder::make_material(const SourceLoc&) {
+  // One material per distinct attribute state, not per primitive request (an exporter writing one
+  // Curves call per strand would otherwise make, and shade with, thousands of equal materials).
+  // Shader parameter lists compare by identity: they are shared while the state is unchanged.
+  const bool flip = attributes_.orientation_lh != object_space_left_handed();
+  MaterialKey key{attributes_.surface,  attributes_.surface_params, attributes_.color,
+                  attributes_.opacity,  attributes_.sides,                flip,
+                  attributes_.matte,    attributes_.lights_on,            attributes_.area_light,
+                  attributes_.area_light_params};
+  auto found = material_ids_.find(key);
+  if (found != material_ids_.end()) return found->second;
   Material m;
   m.surface = attributes_.surface;
-  m.surface_params = attributes_.surface_params;
+  m.surface_params = *attributes_.surface_params;
   m.surface_loc = attributes_.surface_loc;
   m.color = attributes_.color;
   m.opacity = attributes_.opacity;
   m.sides = attributes_.sides;
-  m.flip_normals = attributes_.orientation_lh != object_space_left_handed();
+  m.flip_normals = flip;
   m.matte = attributes_.matte;
   m.lights = attributes_.lights_on;
   m.emissive_area_light = attributes_.area_light;
-  m.area_light_params = attributes_.area_light_params;
+  m.area_light_params = *attributes_.area_light_params;
   scene_->materials.push_back(std::move(m));
-  return uint32_t(scene_->materials.size() - 1);
+  const uint32_t id = uint32_t(scene_->materials.size() - 1);
+  material_ids_.emplace(std::move(key), id);
+  return id;
 }
 
 Vec3f SceneBuilder::to_world(const float* p) const {

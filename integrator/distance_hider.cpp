@@ -45,10 +45,7 @@ Ray footprint_sub_ray(const Ray& ray, const RayFootprint& footprint, int point) 
 }
 
 DistanceContext make_distance_context(const HiderContext& base, const DistanceHiderSettings& settings) {
-  DistanceContext ctx{base, settings, {}, 0};
-  const CurveSet& cs = base.scene.curves;
-  ctx.ends.resize(cs.size());
-  for (size_t i = 0; i < cs.size(); ++i) ctx.ends[i] = segment_ends(cs, i);
+  DistanceContext ctx{base, settings, 0};
   Vec3f extent = base.scene.bounds.empty() ? Vec3f{1, 1, 1} : base.scene.bounds.extent();
   ctx.min_radius = kMinFootprintSceneFraction * std::max(max_component(extent), 1e-6f);
   return ctx;
@@ -73,12 +70,12 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
     if (kind == Scene::PrimKind::CurveSegment) {
       material = cs.attribute_id[local];
       sp.N = -camera_ray.d;
-      if (cs.oriented[local]) {
-        sp.N = normalize(lerp(f.u, cs.normal[2 * local], cs.normal[2 * local + 1]));
+      if (cs.oriented(local)) {
+        sp.N = normalize(lerp(f.u, cs.end_normal(local, 0), cs.end_normal(local, 1)));
         if (scene.materials[material].flip_normals) sp.N = -sp.N;
       }
-      sp.Cs = bezier(&cs.cs[4 * local], f.u);
-      sp.Os = bezier(&cs.os[4 * local], f.u);
+      sp.Cs = bezier(cs.colors(local), f.u);
+      sp.Os = bezier(cs.opacities(local), f.u);
       const Vec3f* cp = cs.control_points(local);
       sp.dPdv = normalize(bezier_derivative(cp, f.u));
       if (length_squared(sp.dPdv) == 0.0f) sp.dPdv = normalize(cp[3] - cp[0]);
@@ -109,14 +106,14 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
           CurveFragmentHit h;
           // Segments are cut at their strand's ends and at joints the strand runs straight
           // through: the A-buffer adds the pieces of a strand up (SegmentEnds::cut_joints).
-          SegmentEnds ends = ctx.ends[local];
+          SegmentEnds ends = segment_ends(cs, local);
           ends.cut_joints = true;
           if (!intersect_segment_distance(cs, local, distance_ray, ctx.settings.coverage, ends, h,
                                           ctx.settings.coverage_masks))
             return;
           const Material& m = scene.materials[cs.attribute_id[local]];
-          if (cs.oriented[local] && m.sides == 1) {
-            Vec3f n = normalize(lerp(h.u, cs.normal[2 * local], cs.normal[2 * local + 1]));
+          if (cs.oriented(local) && m.sides == 1) {
+            Vec3f n = normalize(lerp(h.u, cs.end_normal(local, 0), cs.end_normal(local, 1)));
             if (m.flip_normals) n = -n;
             if (dot(n, ray.d) > 0) return;
           }

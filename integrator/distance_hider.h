@@ -41,7 +41,6 @@ struct DistanceHiderSettings {
 struct DistanceContext {
   const HiderContext& base;
   DistanceHiderSettings settings;
-  std::vector<SegmentEnds> ends;  // per curve segment: which ends are its strand's
   float min_radius;               // footprint floor (scene-scale relative)
 };
 

@@ -31,16 +31,16 @@ bool Tracer::nearest_hit(const Ray& ray_in, SurfaceInteraction& out, RayCounters
           if (!intersect_segment(cs, local, ray, h)) return;
           const Material& m = scene_.materials[cs.attribute_id[local]];
           Vec3f n = -ray.d;
-          if (cs.oriented[local]) {
-            n = normalize(lerp(h.u, cs.normal[2 * local], cs.normal[2 * local + 1]));
+          if (cs.oriented(local)) {
+            n = normalize(lerp(h.u, cs.end_normal(local, 0), cs.end_normal(local, 1)));
             if (m.flip_normals) n = -n;
             if (m.sides == 1 && dot(n, ray.d) > 0) return;
           }
           out.t = h.t;
           out.P = h.p;
           out.N = n;
-          out.Cs = bezier(&cs.cs[4 * local], h.u);
-          out.Os = bezier(&cs.os[4 * local], h.u);
+          out.Cs = bezier(cs.colors(local), h.u);
+          out.Os = bezier(cs.opacities(local), h.u);
           out.material = cs.attribute_id[local];
           out.primitive = p;
           out.is_curve = true;

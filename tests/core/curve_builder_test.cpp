@@ -163,11 +163,16 @@ TEST(CurveBuilder, CatmullRomSegmentsMatchTheBasis) {
                   kFloatTolerance, "segment " + std::to_string(k));
   EXPECT_EQ(next, 4u);
   EXPECT_EQ(set.strand_id, (std::vector<uint32_t>{3, 3, 3}));
-  EXPECT_EQ(set.segment_in_strand, (std::vector<uint32_t>{0, 1, 2}));
   EXPECT_EQ(set.attribute_id, (std::vector<uint32_t>{7, 7, 7}));
   EXPECT_EQ(set.cp.size(), 12u);
-  EXPECT_EQ(set.normal.size(), 6u);
-  EXPECT_EQ(set.oriented, (std::vector<uint8_t>{0, 0, 0}));
+  EXPECT_TRUE(set.normal.empty());  // no segment is oriented
+  for (size_t k = 0; k < 3; ++k) EXPECT_FALSE(set.oriented(k));
+  // The strand's ends are its first and last segments' outer ends.
+  EXPECT_TRUE(set.strand_start(0) && !set.strand_end(0));
+  EXPECT_TRUE(!set.strand_start(1) && !set.strand_end(1));
+  EXPECT_TRUE(!set.strand_start(2) && set.strand_end(2));
+  // One colour for the whole call (no Cs or Os primvar): one shading entry.
+  EXPECT_EQ(set.shading.size(), 1u);
 }
 
 TEST(CurveBuilder, PeriodicBSplineWraps) {
@@ -282,7 +287,7 @@ TEST(CurveBuilder, NormalsUseTheInverseTranspose) {
   uint32_t next = 0;
   CurveSet set = build(in, next);
   ASSERT_EQ(set.size(), 1u);
-  EXPECT_EQ(set.oriented[0], 1);
+  EXPECT_TRUE(set.oriented(0));
   float h = static_cast<float>(1 / std::sqrt(2.0));
   expect_near(set.normal[0], {-h, h, 0}, kFloatTolerance, "n0");
   expect_near(set.normal[1], {-h, h, 0}, kFloatTolerance, "n1 (normalized)");
@@ -295,9 +300,10 @@ TEST(CurveBuilder, ColoursByClassAndDefaults) {
   uint32_t next = 0;
   CurveSet set = build(in, next);
   ASSERT_EQ(set.size(), 2u);
-  expect_near(set.cs[2], {1, 0, 0}, 0, "curve 0");
-  expect_near(set.cs[5], {0, 1, 0}, 0, "curve 1");
-  expect_near(set.os[7], {0.5f, 0.5f, 0.5f}, 0, "default opacity");
+  expect_near(set.colors(0)[2], {1, 0, 0}, 0, "curve 0");
+  expect_near(set.colors(1)[1], {0, 1, 0}, 0, "curve 1");
+  expect_near(set.opacities(1)[3], {0.5f, 0.5f, 0.5f}, 0, "default opacity");
+  EXPECT_EQ(set.shading.size(), 2u);  // uniform Cs: one entry per curve
   EXPECT_EQ(set.strand_id, (std::vector<uint32_t>{0, 1}));
 }
 

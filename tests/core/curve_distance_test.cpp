@@ -16,15 +16,8 @@ constexpr float kTolerance = 1e-5f;
 
 CurveSet single_segment(const std::array<Vec3f, 4>& cp, const std::array<float, 4>& width) {
   CurveSet set;
-  set.cp.assign(cp.begin(), cp.end());
-  set.width.assign(width.begin(), width.end());
-  set.cs.assign(4, Vec3f{1, 1, 1});
-  set.os.assign(4, Vec3f{1, 1, 1});
-  set.normal.assign(2, Vec3f{});
-  set.oriented = {0};
-  set.strand_id = {0};
-  set.segment_in_strand = {0};
-  set.attribute_id = {0};
+  set.add_segment(cp, width, 0, 0);
+  set.mark_strand_ends(0);
   return set;
 }
 

@@ -18,15 +18,8 @@ constexpr float kTolerance = 1e-5f;
 // A set holding one segment with the given Bézier control points and width coefficients.
 CurveSet single_segment(const std::array<Vec3f, 4>& cp, const std::array<float, 4>& width) {
   CurveSet set;
-  set.cp.assign(cp.begin(), cp.end());
-  set.width.assign(width.begin(), width.end());
-  set.cs.assign(4, Vec3f{1, 1, 1});
-  set.os.assign(4, Vec3f{1, 1, 1});
-  set.normal.assign(2, Vec3f{});
-  set.oriented = {0};
-  set.strand_id = {0};
-  set.segment_in_strand = {0};
-  set.attribute_id = {0};
+  set.add_segment(cp, width, 0, 0);
+  set.mark_strand_ends(0);
   return set;
 }
 
@@ -114,7 +107,7 @@ TEST(CurveIntersect, WidthTapersToZero) {
 
 TEST(CurveIntersect, OrientedRibbonNarrowsWithTheViewingAngle) {
   CurveSet set = single_segment(straight_x(), constant_width(0.2f));
-  set.oriented = {1};
+  set.flags[0] |= kSegmentOriented;
   set.normal = {Vec3f{0, 0.6f, 0.8f}, Vec3f{0, 0.6f, 0.8f}};
   CurveHit hit;
   // |n . d| = 0.8: the half-width seen by the ray is 0.08.

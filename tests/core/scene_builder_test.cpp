@@ -162,3 +162,30 @@ TEST(SceneBuilder, UnbalancedBlocksAreErrors) {
 
 }  // namespace
 }  // namespace darc
+
+namespace darc {
+namespace {
+
+// Materials are interned: one per distinct attribute state, however many primitive requests.
+TEST(SceneBuilder, OneMaterialPerDistinctAttributeState) {
+  const char* strand = "Curves \"linear\" [2] \"nonperiodic\" \"P\" [0 0 0 1 0 0] \"constantwidth\" [0.1]\n";
+  std::string rib = "WorldBegin\nSurface \"matte\" \"Kd\" [0.5]\n";
+  for (int i = 0; i < 50; ++i) rib += strand;                       // 50 calls, one state
+  rib += std::string("AttributeBegin\n") + strand + "AttributeEnd\n";  // same state again
+  rib += std::string("Color [1 0 0]\n") + strand + strand;            // a second state
+  rib += std::string("Surface \"matte\" \"Kd\" [0.5]\n") + strand;   // a new Surface call: a third
+  rib += "Sphere 1 -1 1 360\n";                                       // shares the third
+  rib += "WorldEnd\n";
+  Built b = build(rib);
+  ASSERT_EQ(b.scenes.size(), 1u);
+  const Scene& s = b.scenes[0];
+  EXPECT_EQ(s.curves.size(), 54u);
+  ASSERT_EQ(s.materials.size(), 3u);
+  EXPECT_EQ(s.curves.attribute_id[0], s.curves.attribute_id[50]);
+  EXPECT_NE(s.curves.attribute_id[50], s.curves.attribute_id[51]);
+  EXPECT_EQ(s.materials[s.curves.attribute_id[51]].color, (Vec3f{1, 0, 0}));
+  EXPECT_EQ(s.sphere_material[0], s.curves.attribute_id[53]);
+}
+
+}  // namespace
+}  // namespace darc
