@@ -32,9 +32,10 @@ struct BvhNode {
 };
 static_assert(sizeof(BvhNode) == 32);
 
-// One pending node of a footprint walk: nothing inside it can lie nearer than t_lo.
+// One pending node of a footprint walk: nothing inside it within reach of the ray lies at t
+// before t_lo, and the reach there is at most `grow`.
 struct BvhQueueEntry {
-  float t_lo;
+  float t_lo, grow;
   uint32_t node;
 };
 
@@ -91,8 +92,8 @@ struct SlabRay {
 };
 
 // The ray's interval [t0, t1] inside box grown by `grow`, clipped to [tmin, tmax].
-inline bool slab(const SlabRay& r, const BBox& b, float grow, float tmin, float tmax, float& t0) {
-  float t1 = tmax;
+inline bool slab(const SlabRay& r, const BBox& b, float grow, float tmin, float tmax, float& t0, float& t1) {
+  t1 = tmax;
   t0 = tmin;
   auto axis = [&](float lo, float hi, float o, float inv) {
     float a = (lo - grow - o) * inv, c = (hi + grow - o) * inv;
@@ -135,8 +136,8 @@ uint64_t Bvh::nearest(Ray& ray, BvhScratch& scratch, Test&& test) const {
   std::vector<uint32_t>& stack = scratch.stack;
   stack.clear();
   uint64_t visited = 0;
-  float t0;
-  if (!bvh_detail::slab(sr, nodes_[0].box, 0.0f, ray.tmin, ray.tmax, t0)) return 0;
+  float t0, t1;
+  if (!bvh_detail::slab(sr, nodes_[0].box, 0.0f, ray.tmin, ray.tmax, t0, t1)) return 0;
   stack.push_back(0);
   while (!stack.empty()) {
     const uint32_t index = stack.back();
@@ -149,8 +150,8 @@ uint64_t Bvh::nearest(Ray& ray, BvhScratch& scratch, Test&& test) const {
     }
     const uint32_t a = index + 1, b = node.offset;
     float ta, tb;
-    bool ha = bvh_detail::slab(sr, nodes_[a].box, 0.0f, ray.tmin, ray.tmax, ta);
-    bool hb = bvh_detail::slab(sr, nodes_[b].box, 0.0f, ray.tmin, ray.tmax, tb);
+    bool ha = bvh_detail::slab(sr, nodes_[a].box, 0.0f, ray.tmin, ray.tmax, ta, t1);
+    bool hb = bvh_detail::slab(sr, nodes_[b].box, 0.0f, ray.tmin, ray.tmax, tb, t1);
     if (ha && hb) {
       // The farther child waits; the nearer is opened next (ties: the first child first).
       if (tb < ta) {
@@ -180,22 +181,23 @@ uint64_t Bvh::footprint_walk(Ray& ray, const RayFootprint& footprint, BvhScratch
   const float reach0 = footprint.reach(0.0f), reach1 = footprint.reach(1.0f) - reach0;
   std::vector<BvhQueueEntry>& queue = scratch.queue;
   queue.clear();
-  // Enters node `index` in the queue when the ray's cone comes within its box: the box is grown
-  // by the footprint's reach at the box's far depth (a cube around the cone's disc there), and
-  // keyed by the nearest depth of the grown box.
-  auto offer = [&](uint32_t index) {
-    const BBox& box = nodes_[index].box;
-    float lo, hi;
-    bvh_detail::depth_range(ray, inv_dd, box, lo, hi);
-    float reach = reach0 + reach1 * std::max(0.0f, std::min(hi, ray.tmax));
-    // Growing the box by `reach` moves its depth range by at most reach * sum|d_a| / dd.
-    float slack = reach * (std::abs(ray.d.x) + std::abs(ray.d.y) + std::abs(ray.d.z)) * inv_dd;
-    if (hi + slack < ray.tmin || lo - slack > ray.tmax) return;
-    float t0;
-    if (!bvh_detail::slab(sr, box, reach, ray.tmin, ray.tmax, t0)) return;
-    bvh_detail::queue_insert(queue, {lo - slack, index});
+  // Enters node `index` in the queue when the ray's cone comes within its box. A point p of the
+  // box within reach of the ray at t_p puts ray(t_p) inside the box grown by reach(t_p) (a cube
+  // around the cone's disc), so t_p lies in the ray's interval [t0, t1] through the grown box:
+  // t0 is the node's key. `grow` bounds reach(t_p) for every point of the box; a child inherits
+  // the smaller of its parent's bound and the reach at the parent's t1, so a child's grown box
+  // lies inside its parent's and keys never decrease along the walk.
+  auto offer = [&](uint32_t index, float grow) {
+    float t0, t1;
+    if (!bvh_detail::slab(sr, nodes_[index].box, grow, ray.tmin, ray.tmax, t0, t1)) return;
+    bvh_detail::queue_insert(queue, {t0, std::min(grow, reach0 + reach1 * std::max(0.0f, t1)), index});
   };
-  offer(0);
+  {
+    // The root: no point of it lies farther along the ray than its box's largest depth.
+    float lo, hi;
+    bvh_detail::depth_range(ray, inv_dd, nodes_[0].box, lo, hi);
+    offer(0, reach0 + reach1 * std::max(0.0f, std::min(hi, ray.tmax)));
+  }
   uint64_t visited = 0;
   while (!queue.empty()) {
     const BvhQueueEntry entry = queue.back();
@@ -206,8 +208,8 @@ uint64_t Bvh::footprint_walk(Ray& ray, const RayFootprint& footprint, BvhScratch
     if (node.count > 0) {
       for (uint32_t i = node.offset; i < node.offset + node.count; ++i) visit(prims_[i]);
     } else {
-      offer(entry.node + 1);
-      offer(node.offset);
+      offer(entry.node + 1, entry.grow);
+      offer(node.offset, entry.grow);
     }
   }
   return visited;
