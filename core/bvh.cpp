@@ -9,6 +9,16 @@ namespace darc {
 
 namespace {
 
+// A node of the binary tree the build makes before collapsing it: a box and either two children
+// (the first right after the node, the second at `offset`) or `count` primitives from `offset`.
+struct BvhNode {
+  BBox box;
+  uint32_t offset = 0;
+  uint16_t count = 0;  // 0: interior node
+  uint8_t axis = 0;
+  uint8_t unused = 0;
+};
+
 // Bins per axis of the SAH sweep (Wald 2007 uses 16; more change the tree little).
 constexpr int kBins = 16;
 // Largest leaf. Curve tests cost far more than box tests, so leaves stay small; the SAH stops
@@ -139,6 +149,62 @@ struct Builder {
   }
 };
 
+// Collapses a binary tree into 4-wide nodes: each node takes its binary node's two children and
+// keeps opening the child with the largest surface area until it has four.
+struct Collapser {
+  const std::vector<BvhNode>& binary;
+  std::vector<Bvh4Node>& out;
+
+  void set_slot(Bvh4Node& n, int k, const BBox& b) {
+    n.boxes.lo_x[k] = b.lo.x;
+    n.boxes.lo_y[k] = b.lo.y;
+    n.boxes.lo_z[k] = b.lo.z;
+    n.boxes.hi_x[k] = b.hi.x;
+    n.boxes.hi_y[k] = b.hi.y;
+    n.boxes.hi_z[k] = b.hi.z;
+    n.valid |= uint8_t(1u << k);
+  }
+
+  // Makes the 4-wide node for binary node `b` (an interior node, or a leaf when it is the root
+  // of a one-leaf tree) and returns its index.
+  uint32_t collapse(uint32_t b) {
+    std::vector<uint32_t> kids;
+    if (binary[b].count > 0) {
+      kids.push_back(b);
+    } else {
+      kids = {b + 1, binary[b].offset};
+      while (kids.size() < 4) {
+        int best = -1;
+        float best_area = -1.0f;
+        for (size_t i = 0; i < kids.size(); ++i)
+          if (binary[kids[i]].count == 0 && half_area(binary[kids[i]].box) > best_area) {
+            best_area = half_area(binary[kids[i]].box);
+            best = int(i);
+          }
+        if (best < 0) break;  // only leaves left
+        uint32_t opened = kids[size_t(best)];
+        kids[size_t(best)] = opened + 1;
+        kids.insert(kids.begin() + best + 1, binary[opened].offset);
+      }
+    }
+    const uint32_t index = uint32_t(out.size());
+    out.emplace_back();
+    for (size_t k = 0; k < kids.size(); ++k) {
+      const BvhNode& kid = binary[kids[k]];
+      set_slot(out[index], int(k), kid.box);
+      if (kid.count > 0) {
+        out[index].child[k] = kid.offset;
+        out[index].count[k] = uint8_t(kid.count);
+      } else {
+        uint32_t c = collapse(kids[k]);  // may reallocate `out`: index, not a reference
+        out[index].child[k] = c;
+        out[index].count[k] = 0;
+      }
+    }
+    return index;
+  }
+};
+
 }  // namespace
 
 Bvh Bvh::build(std::span<const BBox> prim_bounds) {
@@ -146,13 +212,18 @@ Bvh Bvh::build(std::span<const BBox> prim_bounds) {
   for (uint32_t i = 0; i < prim_bounds.size(); ++i)
     if (valid_box(prim_bounds[i])) bvh.prims_.push_back(i);
   if (bvh.prims_.empty()) return bvh;
-  Builder builder{prim_bounds, std::vector<Vec3f>(prim_bounds.size()), bvh.prims_};
-  for (uint32_t p : bvh.prims_) builder.centroids[p] = prim_bounds[p].center();
-  bvh.nodes_.reserve(2 * bvh.prims_.size());
-  builder.build(0, uint32_t(bvh.prims_.size()), bvh.nodes_);
+  std::vector<BvhNode> binary;
+  {
+    Builder builder{prim_bounds, std::vector<Vec3f>(prim_bounds.size()), bvh.prims_};
+    for (uint32_t p : bvh.prims_) builder.centroids[p] = prim_bounds[p].center();
+    binary.reserve(2 * bvh.prims_.size());
+    builder.build(0, uint32_t(bvh.prims_.size()), binary);
+  }
   // Offsets of interior nodes were relative to the node; make them absolute.
-  for (uint32_t i = 0; i < bvh.nodes_.size(); ++i)
-    if (bvh.nodes_[i].count == 0) bvh.nodes_[i].offset += i;
+  for (uint32_t i = 0; i < binary.size(); ++i)
+    if (binary[i].count == 0) binary[i].offset += i;
+  bvh.nodes_.reserve(binary.size() / 2 + 1);
+  Collapser{binary, bvh.nodes_}.collapse(0);
   bvh.nodes_.shrink_to_fit();
   bvh.prims_.shrink_to_fit();
   return bvh;

@@ -66,7 +66,9 @@ inline CoverageMask nearest_points_mask(const FootprintSquare& sq, float cx, flo
   constexpr int kPoints = kMaskSide * kMaskSide;
   count = std::clamp(count, 0, kPoints);
   if (count == 0) return 0;
-  std::array<std::pair<float, int>, kPoints> key;
+  // Keys order by distance, then by point index: a non-negative float's bits order as the float
+  // does, so (bits << 32 | index) compares as the pair, in one integer comparison.
+  std::array<uint64_t, kPoints> key;
   const float step = 1.0f / kMaskSide;
   for (int j = 0; j < kMaskSide; ++j)
     for (int i = 0; i < kMaskSide; ++i) {
@@ -74,13 +76,15 @@ inline CoverageMask nearest_points_mask(const FootprintSquare& sq, float cx, flo
       float px = u * sq.ax_x + v * sq.ay_x - cx, py = u * sq.ax_y + v * sq.ay_y - cy;
       int b = j * kMaskSide + i;
       float d = point ? px * px + py * py : std::abs(px * nx + py * ny);
-      key[b] = {(allowed >> b) & 1 ? d : std::numeric_limits<float>::infinity(), b};
+      if (!((allowed >> b) & 1) || !(d <= std::numeric_limits<float>::max())) d = std::numeric_limits<float>::infinity();
+      key[b] = (uint64_t(std::bit_cast<uint32_t>(d)) << 32) | uint64_t(b);
     }
-  // Linear-time selection: the pairs order by distance, then by index (deterministic ties).
+  // Linear-time selection.
   std::nth_element(key.begin(), key.begin() + (count - 1), key.end());
+  constexpr uint64_t kInfinityKey = uint64_t(std::bit_cast<uint32_t>(std::numeric_limits<float>::infinity())) << 32;
   CoverageMask m = 0;
   for (int k = 0; k < count; ++k)
-    if (std::isfinite(key[k].first)) m |= CoverageMask{1} << key[k].second;
+    if (key[k] < kInfinityKey) m |= CoverageMask{1} << (key[k] & 63);
   return m;
 }
 

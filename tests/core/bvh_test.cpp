@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <map>
 #include <random>
 #include <vector>
@@ -67,14 +68,16 @@ TEST(Bvh, EveryValidBoxIsInExactlyOneLeaf) {
   boxes[9] = BBox{{0, 0, 0}, {std::numeric_limits<float>::infinity(), 1, 1}};  // non-finite: left out
   Bvh bvh = Bvh::build(boxes);
   std::vector<int> seen(boxes.size(), 0);
-  for (const BvhNode& n : bvh.nodes()) {
-    if (n.count == 0) continue;
-    for (uint32_t i = n.offset; i < n.offset + n.count; ++i) {
-      uint32_t p = bvh.primitives()[i];
-      ++seen[p];
-      // The leaf's box holds its primitives' boxes.
-      EXPECT_LE(n.box.lo.x, boxes[p].lo.x);
-      EXPECT_GE(n.box.hi.z, boxes[p].hi.z);
+  for (const Bvh4Node& n : bvh.nodes()) {
+    for (int k = 0; k < 4; ++k) {
+      if (!((n.valid >> k) & 1) || n.count[k] == 0) continue;
+      for (uint32_t i = n.child[k]; i < n.child[k] + n.count[k]; ++i) {
+        uint32_t p = bvh.primitives()[i];
+        ++seen[p];
+        // The leaf's box holds its primitives' boxes.
+        EXPECT_LE(n.boxes.lo_x[k], boxes[p].lo.x);
+        EXPECT_GE(n.boxes.hi_z[k], boxes[p].hi.z);
+      }
     }
   }
   for (size_t p = 0; p < boxes.size(); ++p) EXPECT_EQ(seen[p], (p == 7 || p == 9) ? 0 : 1) << p;
@@ -189,10 +192,50 @@ TEST(Bvh, BuildIsAPureFunctionOfTheBoxes) {
   Bvh a = Bvh::build(boxes), b = Bvh::build(boxes);
   ASSERT_EQ(a.nodes().size(), b.nodes().size());
   EXPECT_TRUE(std::equal(a.primitives().begin(), a.primitives().end(), b.primitives().begin()));
-  for (size_t i = 0; i < a.nodes().size(); ++i) {
-    EXPECT_EQ(a.nodes()[i].offset, b.nodes()[i].offset);
-    EXPECT_EQ(a.nodes()[i].count, b.nodes()[i].count);
+  for (size_t i = 0; i < a.nodes().size(); ++i)
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_EQ(a.nodes()[i].child[k], b.nodes()[i].child[k]);
+      EXPECT_EQ(a.nodes()[i].count[k], b.nodes()[i].count[k]);
+    }
+}
+
+// The SIMD slab test gives bitwise the results of the portable one, on random boxes and rays,
+// including zero direction components (infinite inverses), rays starting on box planes (0 * inf)
+// and NaN bounds: golden images must not depend on which path the CPU takes.
+TEST(Bvh, SimdSlabTestIsBitwiseThePortableOne) {
+#ifndef DARC_SLAB4_SSE
+  GTEST_SKIP() << "no SIMD path on this architecture: the portable one is the only one";
+#else
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<float> pos(-5.0f, 5.0f), size(0.0f, 3.0f), grow(0.0f, 0.2f);
+  std::uniform_int_distribution<int> special(0, 9);
+  int hits = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    Slab4Boxes b;
+    for (int k = 0; k < 4; ++k) {
+      b.lo_x[k] = pos(rng), b.lo_y[k] = pos(rng), b.lo_z[k] = pos(rng);
+      b.hi_x[k] = b.lo_x[k] + size(rng), b.hi_y[k] = b.lo_y[k] + size(rng), b.hi_z[k] = b.lo_z[k] + size(rng);
+    }
+    Ray ray{{pos(rng), pos(rng), pos(rng)}, normalize(Vec3f{pos(rng), pos(rng), pos(rng)})};
+    switch (special(rng)) {
+      case 0: ray.d.x = 0.0f; break;                 // parallel to the x slabs
+      case 1: ray.d = {0, 0, 1}; ray.o.x = b.lo_x[0]; break;  // on a slab plane: 0 * inf
+      case 2: b.lo_y[1] = std::nanf(""); break;      // a NaN bound
+      case 3: ray.d.y = -0.0f; break;
+      default: break;
+    }
+    Slab4Ray sr(ray);
+    float g = grow(rng), tmin = 0.0f, tmax = trial % 3 == 0 ? std::numeric_limits<float>::infinity() : 8.0f;
+    Slab4Result p = slab4_portable(sr, b, g, tmin, tmax), s = slab4_sse(sr, b, g, tmin, tmax);
+    ASSERT_EQ(p.mask, s.mask) << "trial " << trial;
+    for (int k = 0; k < 4; ++k) {
+      ASSERT_EQ(std::bit_cast<uint32_t>(p.t0[k]), std::bit_cast<uint32_t>(s.t0[k])) << "trial " << trial << " box " << k;
+      ASSERT_EQ(std::bit_cast<uint32_t>(p.t1[k]), std::bit_cast<uint32_t>(s.t1[k])) << "trial " << trial << " box " << k;
+    }
+    hits += std::popcount(p.mask);
   }
+  EXPECT_GT(hits, 1000);  // the boxes are hit often enough to test the intervals, not only misses
+#endif
 }
 
 }  // namespace
