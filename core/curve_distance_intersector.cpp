@@ -210,7 +210,12 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
                   : fs * fe;
   if (!(coverage > 0.0f)) return;
   s.add_piece({coverage, pc.x, pc.y, tx, ty, half_width, end_on});
-  if (coverage > s.coverage || (coverage == s.coverage && t < s.t)) {
+  // Equal coverages (every leaf within the strand's width of the ray covers all of a footprint
+  // narrower than the strand) go to the leaf nearest the ray: its point is the strand's closest
+  // approach, where the shading parameter u and the depth belong. First-found would make u
+  // piecewise constant over each leaf's reach (discs of one colour along wide ribbons).
+  if (coverage > s.coverage ||
+      (coverage == s.coverage && (d < s.distance || (d == s.distance && t < s.t)))) {
     s.found = true;
     s.coverage = coverage;
     s.t = t;

@@ -31,6 +31,9 @@ struct Fragment {
   CoverageMask mask = kFullMask;
   // Surfaces: the footprint point whose sub-ray hit is shaded (-1: the ray itself).
   int surface_point = -1;
+  // Curves: from the ray to the strand axis at the shading point. Decides which of a strand's
+  // equally covering pieces is shaded: the nearest is where the strand's closest approach is.
+  float distance = 0;
 };
 
 struct ShadedFragment {
@@ -74,7 +77,10 @@ class ABuffer {
             added *= float(mask_count(f.mask & ~p.mask)) / float(k);
           float sum = std::min(1.0f, p.coverage + added);
           CoverageMask mask = p.mask | f.mask;
-          if (f.coverage > p.coverage) p = f;
+          // Among equal coverages (pieces wider than the footprint all cover it), the piece
+          // nearest the ray: keeping the first found makes the shading parameter piecewise
+          // constant along wide ribbons.
+          if (f.coverage > p.coverage || (f.coverage == p.coverage && f.distance < p.distance)) p = f;
           nearest_pending_ = std::min(nearest_pending_, p.t);
           p.coverage = sum;
           p.mask = mask;

@@ -188,6 +188,28 @@ TEST(ABuffer, CapMergeInArbitraryOrderStaysClose) {
   expect_near(ab.color(), expected.color, 0.05f);
 }
 
+TEST(ABuffer, EqualCoveragePiecesShadeTheOneNearestTheRay) {
+  // Two pieces of one strand that both cover the whole footprint: the shading point is the
+  // piece passing nearer the ray centre, whichever came first.
+  for (bool near_first : {true, false}) {
+    ABuffer ab;
+    Fragment near = strand_fragment(1, 2.0f, 1.0f), far = near;
+    near.primitive = 10;
+    near.distance = 0.1f;
+    far.primitive = 20;
+    far.distance = 0.4f;
+    uint32_t shaded = 0;
+    auto record = [&](const Fragment& f) {
+      shaded = f.primitive;
+      return ShadedFragment{Vec3f{1, 1, 1}, Vec3f{1, 1, 1}};
+    };
+    ab.add(near_first ? near : far, record);
+    ab.add(near_first ? far : near, record);
+    ab.composite_until(10.0f, record);
+    EXPECT_EQ(shaded, 10u) << (near_first ? "near first" : "far first");
+  }
+}
+
 TEST(ABuffer, ClearResetsEverything) {
   ABuffer ab;
   ab.add(strand_fragment(1, 1.0f, 1.0f), shade_by_primitive);
