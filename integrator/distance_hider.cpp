@@ -117,7 +117,8 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
             if (m.flip_normals) n = -n;
             if (dot(n, ray.d) > 0) return;
           }
-          abuffer.add(Fragment{h.t, h.coverage, cs.strand_id[local], p, h.u, false, {}, {}, h.mask}, shade);
+          abuffer.add(
+              Fragment{h.t, h.coverage, cs.strand_id[local], p, h.u, false, {}, {}, h.mask, -1, h.distance}, shade);
           nearest = std::min(nearest, h.t);
           break;
         }

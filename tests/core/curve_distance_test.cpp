@@ -166,6 +166,31 @@ TEST(CurveDistance, EndsDoNotCutACurveThatSwingsBackAcrossThem) {
   }
 }
 
+TEST(CurveDistance, ASegmentWiderThanLongCoversTheFanOfItsNormals) {
+  // 6 long, 30 wide, zig-zagging: the tangent is at +24 degrees at both ends and -13 in the
+  // middle, at (0, 0). The exact ribbon is the union of the lines normal to the strand (within
+  // the half-width), which fan out past the end lines into a bow-tie whose edges are the middle
+  // normal.
+  CurveSet set = single_segment({Vec3f{-3, 0, 5}, {-1, 0.9f, 5}, {1, -0.9f, 5}, {3, 0, 5}}, constant_width(30));
+  SegmentEnds both{true, true};
+  const float mid_length = std::hypot(8.0f, 1.8f);
+  // The middle tangent and normal.
+  const float tx = 8.0f / mid_length, ty = -1.8f / mid_length;
+  const float nx = -ty, ny = tx;
+  // 12 along the middle normal and 2 inside the fan, either way: past the end line (up) or the
+  // start line (down), where the end lines alone cut everything away.
+  for (float side : {1.0f, -1.0f}) {
+    Ray ray{{side * (12 * nx - 2 * tx), side * (12 * ny - 2 * ty), 0}, {0, 0, 1}};
+    Probe p = probe(set, ray, orthographic(0.5f), CoverageModel::Square, both);
+    ASSERT_TRUE(p.hit) << side;
+    EXPECT_NEAR(p.h.coverage, 1.0f, kTolerance) << side;
+  }
+  // Past the end line and 3 outside the fan's edge: not covered.
+  Probe outside = probe(set, Ray{{12 * nx + 3 * tx, 12 * ny + 3 * ty, 0}, {0, 0, 1}}, orthographic(0.5f),
+                        CoverageModel::Square, both);
+  EXPECT_TRUE(!outside.hit || outside.h.coverage <= kTolerance);
+}
+
 TEST(CurveDistance, HiddenWidthsAndBadRaysReturnNothing) {
   CurveSet zero = single_segment(straight_x(), constant_width(0.0f));
   CurveSet negative = single_segment(straight_x(), constant_width(-0.3f));

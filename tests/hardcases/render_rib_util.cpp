@@ -119,4 +119,35 @@ AlphaComparison distance_against_reference(const std::function<std::string(int s
   return c;
 }
 
+RgbComparison compare_rgb(const Image& test, const Image& reference) {
+  RgbComparison c;
+  double sum_squares = 0;
+  long count = 0;
+  for (const char* name : {"R", "G", "B"}) {
+    const int ct = test.channel_index(name), cr = reference.channel_index(name);
+    for (int y = 0; y < reference.height; ++y)
+      for (int x = 0; x < reference.width; ++x) {
+        float a = test.at(x, y, ct), r = reference.at(x, y, cr);
+        if (!std::isfinite(a) || a < 0.0f || !std::isfinite(r) || r < 0.0f) c.all_valid = false;
+        c.max_pixel = std::max(c.max_pixel, std::abs(a - r));
+        sum_squares += double(a - r) * double(a - r);
+        ++count;
+      }
+  }
+  c.rms = count > 0 ? std::sqrt(sum_squares / double(count)) : 0.0;
+  return c;
+}
+
+HiderComparison distance_against_stochastic(const std::function<std::string(int samples)>& rib, int distance_samples,
+                                            int reference_samples) {
+  Image reference = render_rib(rib(reference_samples), single_thread(HiderKind::Stochastic)).image;
+  Image image = render_rib(rib(distance_samples), single_thread(HiderKind::Distance)).image;
+  HiderComparison c{compare_alpha(image, reference), compare_rgb(image, reference)};
+  AlphaComparison self = compare_alpha(reference, reference);
+  RgbComparison self_rgb = compare_rgb(reference, reference);
+  c.alpha.all_valid = c.alpha.all_valid && self.all_valid;
+  c.rgb.all_valid = c.rgb.all_valid && self_rgb.all_valid;
+  return c;
+}
+
 }  // namespace darc::test

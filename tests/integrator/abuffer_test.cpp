@@ -188,6 +188,55 @@ TEST(ABuffer, CapMergeInArbitraryOrderStaysClose) {
   expect_near(ab.color(), expected.color, 0.05f);
 }
 
+TEST(ABuffer, EqualCoveragePiecesShadeTheOneNearestTheRay) {
+  // Two pieces of one strand that both cover the whole footprint: the shading point is the
+  // piece passing nearer the ray centre, whichever came first.
+  for (bool near_first : {true, false}) {
+    ABuffer ab;
+    Fragment near = strand_fragment(1, 2.0f, 1.0f), far = near;
+    near.primitive = 10;
+    near.distance = 0.1f;
+    far.primitive = 20;
+    far.distance = 0.4f;
+    uint32_t shaded = 0;
+    auto record = [&](const Fragment& f) {
+      shaded = f.primitive;
+      return ShadedFragment{Vec3f{1, 1, 1}, Vec3f{1, 1, 1}};
+    };
+    ab.add(near_first ? near : far, record);
+    ab.add(near_first ? far : near, record);
+    ab.composite_until(10.0f, record);
+    EXPECT_EQ(shaded, 10u) << (near_first ? "near first" : "far first");
+  }
+}
+
+TEST(ABuffer, FragmentsAtEqualDepthShareWhereTheyOverlap) {
+  // Two opaque strands over the same half of the footprint at the same depth: each in front
+  // half the time, so their mean colour over that half, in either insertion order.
+  auto by_strand = [](const Fragment& f) {
+    return ShadedFragment{f.strand == 1 ? Vec3f{1, 0, 0} : Vec3f{0, 0, 1}, Vec3f{1, 1, 1}};
+  };
+  const CoverageMask half = 0x00000000ffffffffull;
+  for (bool red_first : {true, false}) {
+    ABuffer ab;
+    Fragment red = strand_fragment(1, 3.0f, 0.5f), blue = strand_fragment(2, 3.0f, 0.5f);
+    red.mask = blue.mask = half;
+    ab.add(red_first ? red : blue, by_strand);
+    ab.add(red_first ? blue : red, by_strand);
+    ab.composite_until(10.0f, by_strand);
+    expect_near(ab.color(), Vec3f{0.25f, 0.0f, 0.25f}, 1e-6f);
+    expect_near(ab.transmittance(), Vec3f{0.5f, 0.5f, 0.5f}, 1e-6f);
+  }
+  // Apart in depth by more than kEqualDepthFraction, the nearer one hides the other.
+  ABuffer ab;
+  Fragment red = strand_fragment(1, 3.0f, 0.5f), blue = strand_fragment(2, 3.0f * (1 + 1e-4f), 0.5f);
+  red.mask = blue.mask = half;
+  ab.add(blue, by_strand);
+  ab.add(red, by_strand);
+  ab.composite_until(10.0f, by_strand);
+  expect_near(ab.color(), Vec3f{0.5f, 0.0f, 0.0f}, 1e-6f);
+}
+
 TEST(ABuffer, ClearResetsEverything) {
   ABuffer ab;
   ab.add(strand_fragment(1, 1.0f, 1.0f), shade_by_primitive);
