@@ -141,10 +141,10 @@ struct Builder {
     auto in_left = [&](uint32_t p) {
       return std::min(kBins - 1, int((centroids[p][best_axis] - lo) * scale)) <= best_bin;
     };
-    // stable_partition keeps the index order inside each side: the tree is a pure function of
-    // the boxes.
+    // std::partition is deterministic (no allocation, no randomness): the tree is a pure
+    // function of the boxes.
     uint32_t* first = prims.data() + begin;
-    mid = uint32_t(std::stable_partition(first, prims.data() + end, in_left) - prims.data());
+    mid = uint32_t(std::partition(first, prims.data() + end, in_left) - prims.data());
     return mid > begin && mid < end;
   }
 };

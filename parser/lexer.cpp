@@ -241,6 +241,28 @@ Token Lexer::scan_number(Token token) {
   return token;
 }
 
+size_t Lexer::read_numbers(std::vector<float>& out) {
+  if (has_peeked_ || stopped_) return 0;
+  size_t count = 0;
+  for (;;) {
+    skip_whitespace_and_comments();
+    if (pos_ >= text_.size() || !starts_number(static_cast<unsigned char>(text_[pos_]))) break;
+    const size_t begin = pos_, end = token_end(text_, pos_);
+    const char* first = text_.data() + begin;
+    if (*first == '+') ++first;  // from_chars does not take RIB's leading '+'
+    double value = 0;
+    auto [ptr, ec] = std::from_chars(first, text_.data() + end, value);
+    // Anything but a plain finite in-range number goes to scan_number for its message.
+    if (*first == '+' || ec != std::errc() || ptr != text_.data() + end || !std::isfinite(value) ||
+        std::fabs(value) > kMaxNumberMagnitude)
+      break;
+    out.push_back(static_cast<float>(value));
+    pos_ = end;
+    ++count;
+  }
+  return count;
+}
+
 Token Lexer::scan_word(Token token) {
   const size_t begin = pos_;
   pos_ = token_end(text_, pos_);

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "parser/source_loc.h"
 
@@ -36,6 +37,11 @@ class Lexer {
   // Consumes and returns the next token.
   Token next();
   SourceLoc loc(const Token& token) const { return SourceLoc{file_, token.line, token.column}; }
+  // The numeric fast path of parameter arrays: appends the well-formed numbers that follow
+  // directly to `out` (as floats), without making tokens, and stops before the first thing that
+  // is not one (']', a string, a malformed number: the token path then reads it and reports any
+  // error at its position). Returns how many it appended. Call only with no token peeked.
+  size_t read_numbers(std::vector<float>& out);
   const std::shared_ptr<const std::string>& file() const { return file_; }
 
  private:

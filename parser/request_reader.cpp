@@ -146,6 +146,7 @@ void RequestReader::read_values(Param& param) {
   }
   if (first.kind != TokenKind::ArrayBegin) fail_expected(fmt::format("a value for parameter \"{}\"", param.name));
   lexer_.next();
+  lexer_.read_numbers(param.floats);  // the bulk of a numeric array, straight into its values
   while (true) {
     const Token& t = lexer_.peek();
     if (t.kind == TokenKind::ArrayEnd) break;
