@@ -33,75 +33,25 @@ RayFootprint camera_footprint(const Camera& cam, double x, double y, double spac
   return f;
 }
 
-}  // namespace
-
-Ray footprint_sub_ray(const Ray& ray, const RayFootprint& footprint, int point) {
-  const float step = 1.0f / kMaskSide;
-  float u = (float(point % kMaskSide) + 0.5f) * step - 0.5f, v = (float(point / kMaskSide) + 0.5f) * step - 0.5f;
-  Ray r = ray;
-  r.o = ray.o + footprint.dox * u + footprint.doy * v;
-  r.d = ray.d + footprint.ddx * u + footprint.ddy * v;
-  return r;
-}
-
-DistanceContext make_distance_context(const HiderContext& base, const DistanceHiderSettings& settings) {
-  DistanceContext ctx{base, settings, 0};
-  Vec3f extent = base.scene.bounds.empty() ? Vec3f{1, 1, 1} : base.scene.bounds.extent();
-  ctx.min_radius = kMinFootprintSceneFraction * std::max(max_component(extent), 1e-6f);
-  return ctx;
-}
-
-SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray, const RayFootprint& footprint,
-                               RayCounters& counters, RayScratch& scratch) {
+// Walks the footprint of `ray_in`, adds every fragment to scratch.abuffer and composites
+// them front to back with `shade`, stopping once the footprint is opaque. Fragments of strand
+// `skip_strand` are left out (a shadow ray's own strand). Returns the nearest fragment's depth.
+template <class Shade>
+float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const RayFootprint& footprint,
+                        RayCounters& counters, RayScratch& scratch, Shade&& shade, uint32_t skip_strand) {
   const Scene& scene = ctx.base.scene;
   const CurveSet& cs = scene.curves;
-  Ray ray = camera_ray;
+  Ray ray = ray_in;
   ABuffer& abuffer = scratch.abuffer;
   abuffer.clear();
   float nearest = std::numeric_limits<float>::infinity();
-
-  auto shade = [&](const Fragment& f) -> ShadedFragment {
-    uint32_t local;
-    Scene::PrimKind kind = scene.prim_kind(f.primitive, local);
-    ShadingPoint sp;
-    sp.P = camera_ray.at(f.t);
-    sp.I = camera_ray.d;
-    uint32_t material;
-    if (kind == Scene::PrimKind::CurveSegment) {
-      material = cs.attribute_id[local];
-      sp.N = -camera_ray.d;
-      if (cs.oriented(local)) {
-        sp.N = normalize(lerp(f.u, cs.end_normal(local, 0), cs.end_normal(local, 1)));
-        if (scene.materials[material].flip_normals) sp.N = -sp.N;
-      }
-      sp.Cs = bezier(cs.colors(local), f.u);
-      sp.Os = bezier(cs.opacities(local), f.u);
-      const Vec3f* cp = cs.control_points(local);
-      sp.dPdv = normalize(bezier_derivative(cp, f.u));
-      if (length_squared(sp.dPdv) == 0.0f) sp.dPdv = normalize(cp[3] - cp[0]);
-    } else {
-      SurfaceHit h;
-      Ray r = f.surface_point < 0 ? camera_ray : footprint_sub_ray(camera_ray, footprint, f.surface_point);
-      r.tmin = f.t * (1 - 1e-4f);
-      r.tmax = f.t * (1 + 1e-4f) + 1e-6f;
-      bool is_sphere = kind == Scene::PrimKind::Sphere;
-      if (!(is_sphere ? scene.spheres[local].intersect(r, h) : scene.polygons[local].intersect(r, h))) h.ng = -r.d;
-      material = is_sphere ? scene.sphere_material[local] : scene.polygon_material[local];
-      const Material& m = scene.materials[material];
-      sp.N = m.flip_normals ? -h.ng : h.ng;
-      sp.Cs = m.color;
-      sp.Os = m.opacity;
-    }
-    ShadeResult r = ctx.base.shading.surface(material).shade(sp, ctx.base.shading.lights(material));
-    return {r.Ci, r.Oi};
-  };
-
   DistanceRay distance_ray = make_distance_ray(ray, footprint);
   auto visit = [&](uint32_t p) {
       uint32_t local;
       const Scene::PrimKind kind = scene.prim_kind(p, local);
       switch (kind) {
         case Scene::PrimKind::CurveSegment: {
+          if (cs.strand_id[local] == skip_strand) return;
           ++counters.segment_tests;
           CurveFragmentHit h;
           // Segments are cut at their strand's ends and at joints the strand runs straight
@@ -170,13 +120,90 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray
   }
   counters.fragments += abuffer.fragments_added();
   counters.peak_fragments = std::max<uint64_t>(counters.peak_fragments, abuffer.peak_length());
+  return nearest;
+}
+
+}  // namespace
+
+Ray footprint_sub_ray(const Ray& ray, const RayFootprint& footprint, int point) {
+  const float step = 1.0f / kMaskSide;
+  float u = (float(point % kMaskSide) + 0.5f) * step - 0.5f, v = (float(point / kMaskSide) + 0.5f) * step - 0.5f;
+  Ray r = ray;
+  r.o = ray.o + footprint.dox * u + footprint.doy * v;
+  r.d = ray.d + footprint.ddx * u + footprint.ddy * v;
+  return r;
+}
+
+DistanceContext make_distance_context(const HiderContext& base, const DistanceHiderSettings& settings) {
+  DistanceContext ctx{base, settings, 0};
+  Vec3f extent = base.scene.bounds.empty() ? Vec3f{1, 1, 1} : base.scene.bounds.extent();
+  ctx.min_radius = kMinFootprintSceneFraction * std::max(max_component(extent), 1e-6f);
+  return ctx;
+}
+
+SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray, const RayFootprint& footprint,
+                               RayCounters& counters, RayScratch& scratch) {
+  const Scene& scene = ctx.base.scene;
+  const CurveSet& cs = scene.curves;
+  auto shade = [&](const Fragment& f) -> ShadedFragment {
+    uint32_t local;
+    Scene::PrimKind kind = scene.prim_kind(f.primitive, local);
+    ShadingPoint sp;
+    sp.P = camera_ray.at(f.t);
+    sp.I = camera_ray.d;
+    uint32_t material;
+    if (kind == Scene::PrimKind::CurveSegment) {
+      material = cs.attribute_id[local];
+      sp.N = -camera_ray.d;
+      if (cs.oriented(local)) {
+        sp.N = normalize(lerp(f.u, cs.end_normal(local, 0), cs.end_normal(local, 1)));
+        if (scene.materials[material].flip_normals) sp.N = -sp.N;
+      }
+      sp.Cs = bezier(cs.colors(local), f.u);
+      sp.Os = bezier(cs.opacities(local), f.u);
+      const Vec3f* cp = cs.control_points(local);
+      sp.dPdv = normalize(bezier_derivative(cp, f.u));
+      if (length_squared(sp.dPdv) == 0.0f) sp.dPdv = normalize(cp[3] - cp[0]);
+    } else {
+      SurfaceHit h;
+      Ray r = f.surface_point < 0 ? camera_ray : footprint_sub_ray(camera_ray, footprint, f.surface_point);
+      r.tmin = f.t * (1 - 1e-4f);
+      r.tmax = f.t * (1 + 1e-4f) + 1e-6f;
+      bool is_sphere = kind == Scene::PrimKind::Sphere;
+      if (!(is_sphere ? scene.spheres[local].intersect(r, h) : scene.polygons[local].intersect(r, h))) h.ng = -r.d;
+      material = is_sphere ? scene.sphere_material[local] : scene.polygon_material[local];
+      const Material& m = scene.materials[material];
+      sp.N = m.flip_normals ? -h.ng : h.ng;
+      sp.Cs = m.color;
+      sp.Os = m.opacity;
+    }
+    ShadeResult r = ctx.base.shading.surface(material).shade(sp, ctx.base.shading.lights(material));
+    return {r.Ci, r.Oi};
+  };
 
   SampleValue out;
+  out.depth = collect_fragments(ctx, camera_ray, footprint, counters, scratch, shade, kNoStrand);
+  const ABuffer& abuffer = scratch.abuffer;
   out.color = abuffer.color();
   Vec3f tr = abuffer.transmittance();
   out.alpha = 1.0f - (tr.x + tr.y + tr.z) / 3.0f;
-  out.depth = nearest;
   return out;
+}
+
+Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
+                                    RayCounters& counters, RayScratch& scratch, uint32_t skip_strand) {
+  const Scene& scene = ctx.base.scene;
+  const CurveSet& cs = scene.curves;
+  // Only opacity matters here: Os from the primitive (curve primvars, else the material).
+  auto opacity = [&](const Fragment& f) -> ShadedFragment {
+    uint32_t local;
+    Scene::PrimKind kind = scene.prim_kind(f.primitive, local);
+    if (kind == Scene::PrimKind::CurveSegment) return {Vec3f{}, bezier(cs.opacities(local), f.u)};
+    uint32_t material = kind == Scene::PrimKind::Sphere ? scene.sphere_material[local] : scene.polygon_material[local];
+    return {Vec3f{}, scene.materials[material].opacity};
+  };
+  collect_fragments(ctx, ray, footprint, counters, scratch, opacity, skip_strand);
+  return scratch.abuffer.transmittance();
 }
 
 void render_tile_distance(const DistanceContext& ctx, const PixelRect& rect, TileAccumulator& acc,

@@ -104,6 +104,14 @@ bool surface_coverage(const Ray& ray, const RayFootprint& footprint, HitSurface&
 SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
                                RayCounters& counters, RayScratch& scratch);
 
+// The transmittance of the footprint along `ray` (mean over its 8x8 points): every strand and
+// surface it passes, front to back, as coverage x opacity, through the same walk and A-buffer as
+// camera rays (so thin strands attenuate smoothly); stops once below kDistanceMinTransmittance.
+// Strand `skip_strand` is left out (the strand a shadow ray starts on; kNoStrand: none).
+// Opacity is the primitive's Os: shaders that change Oi are not consulted.
+Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
+                                    RayCounters& counters, RayScratch& scratch, uint32_t skip_strand);
+
 // Renders the samples of the pixels in `rect`: N x N rays per pixel through the centres of the
 // strata, each with a footprint of 1/N of a pixel.
 void render_tile_distance(const DistanceContext& ctx, const PixelRect& rect, TileAccumulator& acc,

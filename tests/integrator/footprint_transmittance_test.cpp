@@ -1,0 +1,104 @@
+// The footprint transmittance query (the walk and A-buffer of camera rays, opacity only) against
+// analytic values: strands stacked in depth over the same part of the footprint, strands side by
+// side, a skipped strand, an opaque surface behind.
+#include "integrator/distance_hider.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "core/scene_builder.h"
+#include "parser/rib_parser.h"
+#include "shading/scene_shading.h"
+
+namespace darc {
+namespace {
+
+// Float rounding of the per-point composite and of the band coverage.
+constexpr float kTolerance = 1e-4f;
+
+Scene build_scene(const std::string& world) {
+  Diagnostics diag([](const Diagnostic& d) {
+    if (d.severity == Severity::Error) ADD_FAILURE() << d.str();
+  });
+  std::optional<Scene> scene;
+  SceneBuilder::Callbacks callbacks;
+  callbacks.frame_ready = [&](Scene&& s) { scene.emplace(std::move(s)); };
+  SceneBuilder builder(diag, callbacks);
+  RibParser parser(builder, diag);
+  parser.parse_string("Projection \"orthographic\"\nWorldBegin\n" + world + "WorldEnd\n", "test.rib");
+  builder.finish(SourceLoc{});
+  if (!scene) {
+    ADD_FAILURE() << "no frame";
+    return Scene{};
+  }
+  scene->build_acceleration();
+  return std::move(*scene);
+}
+
+// A straight strand along x at height y and depth z.
+std::string strand(float y, float z, float width, float opacity) {
+  std::ostringstream s;
+  s << "AttributeBegin\nOpacity [" << opacity << " " << opacity << " " << opacity << "]\n"
+    << "Curves \"linear\" [2] \"nonperiodic\" \"P\" [-3 " << y << " " << z << "  3 " << y << " " << z
+    << "] \"constantwidth\" [" << width << "]\nAttributeEnd\n";
+  return s.str();
+}
+
+// The transmittance seen along +z from (0, 0, -1) with a 1 x 1 footprint (orthographic).
+Vec3f transmittance(const Scene& scene, uint32_t skip_strand = kNoStrand) {
+  Diagnostics diag([](const Diagnostic&) {});
+  SceneShading shading(scene, diag);
+  Tracer tracer(scene);
+  HiderContext base{scene, shading, tracer, 0, 1, 1};
+  DistanceContext ctx = make_distance_context(base, DistanceHiderSettings{});
+  RayFootprint fp;
+  fp.dox = Vec3f{1, 0, 0};
+  fp.doy = Vec3f{0, 1, 0};
+  Ray ray{{0, 0, -1}, {0, 0, 1}};
+  RayCounters counters;
+  RayScratchStack scratch(scene.accel);
+  return trace_footprint_transmittance(ctx, ray, fp, counters, scratch.at(0), skip_strand);
+}
+
+TEST(FootprintTransmittance, StrandsStackedInDepthOccludeTheSamePoints) {
+  // k strands of coverage c = 0.25 and opacity o over the same quarter of the footprint: that
+  // quarter transmits (1 - o)^k, the rest everything.
+  const float c = 0.25f, o = 0.4f;
+  for (int k = 1; k <= 4; ++k) {
+    std::string world;
+    for (int i = 0; i < k; ++i) world += strand(0.0f, 2.0f + float(i), c, o);
+    Vec3f t = transmittance(build_scene(world));
+    float expected = 1.0f - c + c * std::pow(1.0f - o, float(k));
+    EXPECT_NEAR(t.x, expected, kTolerance) << k << " strands";
+    EXPECT_NEAR(t.y, expected, kTolerance);
+  }
+}
+
+TEST(FootprintTransmittance, StrandsSideBySideAddUp) {
+  // Four strands of width 0.25 tiling the footprint, each at its own depth: 1 - 4 * c * o.
+  const float c = 0.25f, o = 0.4f;
+  std::string world;
+  for (int i = 0; i < 4; ++i) world += strand(-0.375f + 0.25f * float(i), 2.0f + float(i), c, o);
+  Vec3f t = transmittance(build_scene(world));
+  EXPECT_NEAR(t.x, 1.0f - 4.0f * c * o, 0.02f);  // the mask points place each band to 1/8
+}
+
+TEST(FootprintTransmittance, TheSkippedStrandCastsNothing) {
+  Scene scene = build_scene(strand(0.0f, 2.0f, 0.5f, 1.0f) + strand(0.0f, 3.0f, 0.25f, 1.0f));
+  ASSERT_EQ(scene.curves.size(), 2u);
+  EXPECT_NEAR(transmittance(scene).x, 0.5f, kTolerance);  // the wide one hides the narrow one
+  EXPECT_NEAR(transmittance(scene, scene.curves.strand_id[0]).x, 0.75f, kTolerance);
+  EXPECT_NEAR(transmittance(scene, scene.curves.strand_id[1]).x, 0.5f, kTolerance);
+}
+
+TEST(FootprintTransmittance, AnOpaqueSurfaceBlocksEverything) {
+  Scene scene = build_scene(strand(0.0f, 2.0f, 0.25f, 0.5f) + "Polygon \"P\" [-5 -5 4  5 -5 4  5 5 4  -5 5 4]\n");
+  EXPECT_NEAR(transmittance(scene).x, 0.0f, kTolerance);
+}
+
+}  // namespace
+}  // namespace darc
