@@ -1,0 +1,31 @@
+// Loading a benchmark scene: the RIB text parsed by darc's own SceneBuilder (the first frame),
+// then its acceleration structure built, each step timed, with the resident memory before and
+// after (bench/process_memory.h). Shared by speed_vs_error and embree_peer, so that both
+// render exactly the same Scene.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "core/scene.h"
+
+namespace darc::bench {
+
+// The whole file, or nullopt when it cannot be read.
+std::optional<std::string> read_text(const std::string& path);
+
+struct LoadedScene {
+  Scene scene;
+  double parse_seconds = 0;  // RIB text -> Scene (parser and SceneBuilder)
+  double build_seconds = 0;  // Scene::build_acceleration (the uniform grid)
+  // Resident set size before parsing and after building (the text itself is already resident).
+  uint64_t resident_before_bytes = 0, resident_after_bytes = 0;
+};
+
+// Parses `text` (named `name` in diagnostics, which go to stderr) and returns its first frame
+// with the acceleration structure built (unless `build_acceleration` is false), or nullopt when
+// it has errors or no frame.
+std::optional<LoadedScene> load_scene(const std::string& text, const std::string& name, bool build_acceleration = true);
+
+}  // namespace darc::bench
