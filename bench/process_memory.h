@@ -1,11 +1,13 @@
-// Resident memory of this process, read from /proc/self/status (Linux): the current resident
-// set (VmRSS) and its peak so far (VmHWM), for the benchmark's memory figures. Not a measure of
-// what a data structure needs (the allocator keeps freed pages, pages are shared): the report
-// states it as the growth of the resident set around loading and building a scene.
+// Memory of this process for the benchmark's figures: the resident set (VmRSS) and its peak
+// (VmHWM) from /proc/self/status (Linux), and the bytes the C heap has handed out (glibc's
+// mallinfo2). The resident set is what the machine pays, but the allocator keeps freed pages
+// (a scene loaded after another reuses them), so the exact per-scene figure is the growth of the
+// heap in use; the report gives both.
 #pragma once
 
 #include <cstdint>
 #include <fstream>
+#include <malloc.h>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -41,5 +43,25 @@ inline uint64_t process_status_bytes(std::string_view field) {
 }
 inline uint64_t resident_bytes() { return process_status_bytes("VmRSS"); }
 inline uint64_t peak_resident_bytes() { return process_status_bytes("VmHWM"); }
+
+// Bytes of the C heap in use (small blocks plus mmapped large ones), glibc's own count.
+inline uint64_t heap_in_use_bytes() {
+  struct mallinfo2 info = mallinfo2();
+  return uint64_t(info.uordblks) + uint64_t(info.hblkhd);
+}
+
+// Returns the heap's free memory to the system (glibc malloc_trim), so that a resident-set
+// reading that follows counts less of what the allocator merely keeps.
+inline void trim_heap() { malloc_trim(0); }
+
+// Resets VmHWM to the current resident set (Linux: "5" written to /proc/self/clear_refs), so that
+// the next peak_resident_bytes() is the peak since now. False when the kernel refuses it; the
+// peak then counts from the start of the process.
+inline bool reset_peak_resident() {
+  std::ofstream out("/proc/self/clear_refs");
+  out << "5";
+  out.flush();
+  return bool(out);
+}
 
 }  // namespace darc::bench

@@ -22,7 +22,9 @@ std::optional<LoadedScene> load_scene(const std::string& text, const std::string
   using Clock = std::chrono::steady_clock;
   auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   LoadedScene loaded;
+  trim_heap();
   loaded.resident_before_bytes = resident_bytes();
+  loaded.heap_before_bytes = heap_in_use_bytes();
   Clock::time_point t0 = Clock::now();
   std::optional<Scene> scene;
   {  // the parser and builder are gone before the resident set is read again
@@ -44,7 +46,9 @@ std::optional<LoadedScene> load_scene(const std::string& text, const std::string
     loaded.scene.build_acceleration();
     loaded.build_seconds = seconds_since(t1);
   }
+  trim_heap();
   loaded.resident_after_bytes = resident_bytes();
+  loaded.heap_after_bytes = heap_in_use_bytes();
   return loaded;
 }
 

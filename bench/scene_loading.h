@@ -19,8 +19,10 @@ struct LoadedScene {
   Scene scene;
   double parse_seconds = 0;  // RIB text -> Scene (parser and SceneBuilder)
   double build_seconds = 0;  // Scene::build_acceleration (the uniform grid)
-  // Resident set size before parsing and after building (the text itself is already resident).
+  // Resident set size and C heap in use before parsing and after building (the text itself is
+  // already in memory before), each read after trimming the heap (bench/process_memory.h).
   uint64_t resident_before_bytes = 0, resident_after_bytes = 0;
+  uint64_t heap_before_bytes = 0, heap_after_bytes = 0;
 };
 
 // Parses `text` (named `name` in diagnostics, which go to stderr) and returns its first frame
