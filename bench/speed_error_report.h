@@ -7,6 +7,7 @@
 #include <ostream>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/equal_error.h"
@@ -76,6 +77,9 @@ struct SceneReport {
   // The work of settings[i] is work[i] (empty when not counted; kept apart from Measurement so
   // that its aggregate layout, which the CSV tests spell out, stays as it is).
   std::vector<WorkCounters> work;
+  // The Embree peer's N x N image against darc's stochastic N x N image (the same rays): how
+  // well the two agree, by N. Empty when the peer was not measured.
+  std::vector<std::pair<int, ImageError>> embree_vs_stochastic;
   std::vector<VariantMeasurement> coverage;    // distance 1x1, one per coverage model
   std::vector<VariantMeasurement> sort_interval;  // distance 1x1, empty when not measured
 };

@@ -114,6 +114,15 @@ void write_scene(std::ostream& out, const SceneReport& s, const RunDescription& 
         << cell(per_ray(w.intersect_calls, w.primary_rays), !darc) << " |\n";
   }
   out << "\n";
+  if (!s.embree_vs_stochastic.empty()) {
+    out << "Embree peer against darc's stochastic hider at the same N x N (the same rays and shading; any difference is "
+           "the geometry code): ";
+    for (size_t i = 0; i < s.embree_vs_stochastic.size(); ++i) {
+      const auto& [n, e] = s.embree_vs_stochastic[i];
+      out << (i ? ", " : "") << n << "x" << n << " RMSE " << g3(e.rmse) << " (max " << g3(e.max_error) << ")";
+    }
+    out << ".\n\n";
+  }
   for (int n : {1, 2}) {
     for (const char* baseline : {"stochastic", "embree"}) {
       std::optional<EqualErrorSpeedup> e = equal_error_speedup(s, n, baseline);

@@ -15,6 +15,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -204,7 +205,9 @@ bool measures_sort_interval(const Options& o, const std::string& name) {
 }
 
 // The Embree peer's settings, 1x1 .. stochastic_max, appended to the report (when built).
-void measure_embree(const Scene& scene, const Options& o, const Image& reference, SceneReport& report) {
+// `stochastic` holds darc's stochastic image per N of the same run, for the agreement check.
+void measure_embree(const Scene& scene, const Options& o, const Image& reference,
+                    const std::map<int, Image>& stochastic, SceneReport& report) {
 #ifdef DARC_BENCH_HAVE_EMBREE
   uint64_t resident_before = resident_bytes();
   EmbreeBuildStats build;
@@ -245,9 +248,15 @@ void measure_embree(const Scene& scene, const Options& o, const Image& reference
                  m.seconds, m.runs, m.error.rmse, m.error.max_error);
     report.settings.push_back(m);
     report.work.push_back(best.work);
+    if (auto it = stochastic.find(n); it != stochastic.end()) {
+      ImageError agreement = error_against(best.image, it->second);
+      report.embree_vs_stochastic.push_back({n, agreement});
+      std::fprintf(stderr, "  embree %dx%d vs darc stochastic %dx%d (same rays): rmse %.3g  max %.3g\n", n, n, n, n,
+                   agreement.rmse, agreement.max_error);
+    }
   }
 #else
-  (void)scene, (void)o, (void)reference, (void)report;
+  (void)scene, (void)o, (void)reference, (void)stochastic, (void)report;
 #endif
 }
 
@@ -312,9 +321,11 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
   // pool and faulting in the scene's pages, which is no property of the setting measured first.
   render_timed(scene, render_options(HiderKind::Distance, o), 1, 1, 0);
 
+  std::map<int, Image> stochastic_images;  // by N, for the Embree peer's agreement check
   auto measure = [&](HiderKind hider, int n) {
     TimedImage t = render_timed(scene, render_options(hider, o), n, o.max_runs, o.repeat_budget_seconds);
     Measurement m{name, to_string(hider), n, t.seconds, t.runs, error_against(t.image, *reference)};
+    if (hider == HiderKind::Stochastic && o.embree) stochastic_images[n] = t.image;
     std::fprintf(stderr, "  %-10s %2dx%-2d %8.3f s (%d runs)  rmse %.4g  max %.4g\n", m.hider.c_str(), n, n,
                  m.seconds, m.runs, m.error.rmse, m.error.max_error);
     report.settings.push_back(m);
@@ -323,7 +334,7 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
   for (int n : kDistanceSamples) measure(HiderKind::Distance, n);
   for (int n : kStochasticSamples)
     if (n <= o.stochastic_max) measure(HiderKind::Stochastic, n);
-  if (o.embree) measure_embree(scene, o, *reference, report);
+  if (o.embree) measure_embree(scene, o, *reference, stochastic_images, report);
   if (o.variants) measure_variants(scene, o, *reference, report);
   report.load.peak_resident_bytes = peak_resident_bytes();
   report.load.peak_is_per_scene = peak_reset;
