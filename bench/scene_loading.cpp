@@ -18,7 +18,8 @@ std::optional<std::string> read_text(const std::string& path) {
   return s.str();
 }
 
-std::optional<LoadedScene> load_scene(const std::string& text, const std::string& name, bool build_acceleration) {
+std::optional<LoadedScene> load_scene(const std::string& text, const std::string& name, bool build_acceleration,
+                                      AcceleratorKind accelerator) {
   using Clock = std::chrono::steady_clock;
   auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   LoadedScene loaded;
@@ -43,7 +44,7 @@ std::optional<LoadedScene> load_scene(const std::string& text, const std::string
   loaded.scene = std::move(*scene);
   if (build_acceleration) {
     Clock::time_point t1 = Clock::now();
-    loaded.scene.build_acceleration();
+    loaded.scene.build_acceleration(accelerator);
     loaded.build_seconds = seconds_since(t1);
   }
   trim_heap();

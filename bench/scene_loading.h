@@ -18,7 +18,7 @@ std::optional<std::string> read_text(const std::string& path);
 struct LoadedScene {
   Scene scene;
   double parse_seconds = 0;  // RIB text -> Scene (parser and SceneBuilder)
-  double build_seconds = 0;  // Scene::build_acceleration (the uniform grid)
+  double build_seconds = 0;  // Scene::build_acceleration (the BVH or the uniform grid)
   // Resident set size and C heap in use before parsing and after building (the text itself is
   // already in memory before), each read after trimming the heap (bench/process_memory.h).
   uint64_t resident_before_bytes = 0, resident_after_bytes = 0;
@@ -26,8 +26,9 @@ struct LoadedScene {
 };
 
 // Parses `text` (named `name` in diagnostics, which go to stderr) and returns its first frame
-// with the acceleration structure built (unless `build_acceleration` is false), or nullopt when
-// it has errors or no frame.
-std::optional<LoadedScene> load_scene(const std::string& text, const std::string& name, bool build_acceleration = true);
+// with the acceleration structure of kind `accelerator` built (unless `build_acceleration` is
+// false), or nullopt when it has errors or no frame.
+std::optional<LoadedScene> load_scene(const std::string& text, const std::string& name, bool build_acceleration = true,
+                                      AcceleratorKind accelerator = kDefaultAccelerator);
 
 }  // namespace darc::bench

@@ -54,7 +54,8 @@ struct WidthStats {
 struct SceneLoadCost {
   uint64_t rib_bytes = 0;
   double parse_seconds = 0;         // RIB text -> Scene
-  double build_seconds = 0;         // darc's uniform grid
+  double build_seconds = 0;         // darc's acceleration structure (RunDescription::accelerator)
+  uint64_t accelerator_bytes = 0;   // its own count (Accelerator::memory_bytes)
   uint64_t resident_growth_bytes = 0;  // resident set after parse + build minus before
   uint64_t heap_growth_bytes = 0;      // C heap in use after parse + build minus before: the Scene
   uint64_t peak_resident_bytes = 0;    // VmHWM at the end of the scene's measurements (0: unknown)
@@ -97,6 +98,7 @@ struct RunDescription {
   int threads = 0;           // render threads actually used
   std::string embree;        // "Embree 3.13.5" when the peer was measured, else empty
   bool quick = false;        // the smoke run (reduced resolution and reference)
+  std::string accelerator;   // darc's acceleration structure: "bvh" or "grid"
 };
 
 // The CSV's header, in column order.

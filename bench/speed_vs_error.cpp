@@ -69,7 +69,12 @@ struct Options {
   bool embree = false;        // measure the Embree peer (when built)
   std::string report_stem;    // "640": performance-640.md etc. with the 640 report's tables
   bool quick = false;         // label the report as the quick smoke run
+  std::string accelerator = to_string(kDefaultAccelerator);  // "bvh" or "grid"
 };
+
+AcceleratorKind accelerator_kind(const Options& o) {
+  return o.accelerator == "grid" ? AcceleratorKind::Grid : AcceleratorKind::Bvh;
+}
 
 int render_threads(const Options& o) {
   return o.threads > 0 ? o.threads : std::max(1, int(std::thread::hardware_concurrency()));
@@ -290,7 +295,7 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
     return std::nullopt;
   }
   const bool peak_reset = reset_peak_resident();
-  std::optional<LoadedScene> loaded = load_scene(*text, path);
+  std::optional<LoadedScene> loaded = load_scene(*text, path, true, accelerator_kind(o));
   if (!loaded) {
     std::fprintf(stderr, "speed_vs_error: error: %s has errors or no frame\n", path.c_str());
     return std::nullopt;
@@ -305,11 +310,12 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
   report.load.rib_bytes = text->size();
   report.load.parse_seconds = loaded->parse_seconds;
   report.load.build_seconds = loaded->build_seconds;
+  report.load.accelerator_bytes = scene.accel.memory_bytes();
   report.load.resident_growth_bytes =
       loaded->resident_after_bytes - std::min(loaded->resident_after_bytes, loaded->resident_before_bytes);
   report.load.heap_growth_bytes =
       loaded->heap_after_bytes - std::min(loaded->heap_after_bytes, loaded->heap_before_bytes);
-  std::fprintf(stderr, "  load: parse %.3f s, grid %.3f s, heap +%.1f MB, resident +%.1f MB\n", loaded->parse_seconds,
+  std::fprintf(stderr, "  load: parse %.3f s, acceleration %.3f s, heap +%.1f MB, resident +%.1f MB\n", loaded->parse_seconds,
                loaded->build_seconds, double(report.load.heap_growth_bytes) / 1e6,
                double(report.load.resident_growth_bytes) / 1e6);
   const ReferenceSettings reference_settings = reference_for(o, name);
@@ -368,6 +374,7 @@ RunDescription describe_run(const Options& o) {
                              "." + std::to_string(RTC_VERSION_PATCH);
 #endif
   run.quick = o.quick;
+  run.accelerator = o.accelerator;
   return run;
 }
 
@@ -475,6 +482,8 @@ int main(int argc, char** argv) {
   app.add_option("--report-stem", o.report_stem,
                  "write performance-STEM.md, speed-vs-error-STEM.csv/.png with work per ray and memory");
   app.add_flag("--quick", o.quick, "label the report as the quick smoke run");
+  app.add_option("--accelerator", o.accelerator, "darc's acceleration structure (default: the renderer's)")
+      ->check(CLI::IsMember({"bvh", "grid"}));
   app.add_option("scenes", o.scenes, "NAME=FILE.rib")->required();
   CLI11_PARSE(app, argc, argv);
 #ifndef DARC_BENCH_HAVE_EMBREE
