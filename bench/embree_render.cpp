@@ -72,14 +72,14 @@ std::optional<std::pair<ShadingPoint, uint32_t>> shading_point(const RenderConte
       material = cs.attribute_id[i];
       const Material& m = ctx.scene.materials[material];
       Vec3f n = -ray.d;  // ribbons facing the ray: the normal faces the viewer
-      if (cs.oriented[i]) {
-        n = normalize(lerp(u, cs.normal[2 * i], cs.normal[2 * i + 1]));
+      if (cs.oriented(i)) {
+        n = normalize(lerp(u, cs.end_normal(i, 0), cs.end_normal(i, 1)));
         if (m.flip_normals) n = -n;
         if (m.sides == 1 && dot(n, ray.d) > 0) return std::nullopt;
       }
       sp.N = n;
-      sp.Cs = bezier(&cs.cs[4 * i], u);
-      sp.Os = bezier(&cs.os[4 * i], u);
+      sp.Cs = bezier(cs.colors(i), u);
+      sp.Os = bezier(cs.opacities(i), u);
       sp.dPdv = curve_tangent(cs.control_points(i), u, ray.d);
       break;
     }

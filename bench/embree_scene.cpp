@@ -134,7 +134,7 @@ void EmbreeScene::add_curves(bool oriented, EmbreeBuildStats& stats) {
   g->kind = oriented ? EmbreeGeometry::Kind::OrientedCurves : EmbreeGeometry::Kind::FlatCurves;
   g->scene = &source_;
   for (uint32_t i = 0; i < cs.size(); ++i) {
-    if ((cs.oriented[i] != 0) != oriented) continue;
+    if (cs.oriented(i) != oriented) continue;
     const float* w = cs.widths(i);
     if (std::max({w[0], w[1], w[2], w[3]}) <= 0) continue;  // hidden everywhere
     g->source.push_back(i);
@@ -160,7 +160,7 @@ void EmbreeScene::add_curves(bool oriented, EmbreeBuildStats& stats) {
       float* v = vertices + 4 * (kControlPointsPerSegment * k + j);
       v[0] = cp[j].x, v[1] = cp[j].y, v[2] = cp[j].z, v[3] = std::max(0.0f, w[j] * 0.5f);
       if (normals) {
-        Vec3f nj = lerp(float(j) / 3.0f, cs.normal[2 * i], cs.normal[2 * i + 1]);
+        Vec3f nj = lerp(float(j) / 3.0f, cs.end_normal(i, 0), cs.end_normal(i, 1));
         float* nv = normals + 3 * (kControlPointsPerSegment * k + j);
         nv[0] = nj.x, nv[1] = nj.y, nv[2] = nj.z;
       }

@@ -56,6 +56,7 @@ struct SceneLoadCost {
   double parse_seconds = 0;         // RIB text -> Scene
   double build_seconds = 0;         // darc's acceleration structure (RunDescription::accelerator)
   uint64_t accelerator_bytes = 0;   // its own count (Accelerator::memory_bytes)
+  uint64_t curve_bytes = 0;         // the CurveSet's own count (CurveSet::memory_bytes)
   uint64_t resident_growth_bytes = 0;  // resident set after parse + build minus before
   uint64_t heap_growth_bytes = 0;      // C heap in use after parse + build minus before: the Scene
   uint64_t peak_resident_bytes = 0;    // VmHWM at the end of the scene's measurements (0: unknown)

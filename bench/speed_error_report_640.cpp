@@ -136,17 +136,18 @@ void write_scene(std::ostream& out, const SceneReport& s, const RunDescription& 
 }
 
 void write_memory(std::ostream& out, std::span<const SceneReport> scenes, bool with_embree) {
-  out << "## Loading and memory\n\n| scene | segments | RIB MB | parse s | parse MB/s | accel build s | build us/segment | accel bytes/segment "
+  out << "## Loading and memory\n\n| scene | segments | RIB MB | parse s | parse MB/s | accel build s | build us/segment | accel bytes/segment | curve bytes/segment "
          "| heap growth MB | heap bytes/segment | resident growth MB | resident bytes/segment | peak resident MB |";
   if (with_embree) out << " Embree BVH s | Embree us/segment | Embree MB | Embree bytes/segment |";
-  out << "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|" << (with_embree ? "---|---|---|---|" : "") << "\n";
+  out << "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|" << (with_embree ? "---|---|---|---|" : "") << "\n";
   for (const SceneReport& s : scenes) {
     const SceneLoadCost& l = s.load;
     const double segments = double(std::max<size_t>(1, s.curve_segments));
     out << "| " << s.name << " | " << s.curve_segments << " | " << mb(l.rib_bytes) << " | " << g3(l.parse_seconds)
         << " | " << g3(l.parse_seconds > 0 ? double(l.rib_bytes) / 1e6 / l.parse_seconds : 0) << " | "
         << g3(l.build_seconds) << " | " << g3(1e6 * l.build_seconds / segments) << " | "
-        << format("%.0f", bytes_per_segment(l.accelerator_bytes, s.curve_segments)) << " | " << mb(l.heap_growth_bytes)
+        << format("%.0f", bytes_per_segment(l.accelerator_bytes, s.curve_segments)) << " | "
+        << format("%.0f", bytes_per_segment(l.curve_bytes, s.curve_segments)) << " | " << mb(l.heap_growth_bytes)
         << " | " << format("%.0f", bytes_per_segment(l.heap_growth_bytes, s.curve_segments)) << " | "
         << mb(l.resident_growth_bytes) << " | " << format("%.0f", bytes_per_segment(l.resident_growth_bytes, s.curve_segments))
         << " | " << mb(l.peak_resident_bytes) << (l.peak_is_per_scene ? "" : " (process)") << " |";

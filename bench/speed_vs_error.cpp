@@ -312,6 +312,7 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
   report.load.parse_seconds = loaded->parse_seconds;
   report.load.build_seconds = loaded->build_seconds;
   report.load.accelerator_bytes = scene.accel.memory_bytes();
+  report.load.curve_bytes = scene.curves.memory_bytes();
   report.load.resident_growth_bytes =
       loaded->resident_after_bytes - std::min(loaded->resident_after_bytes, loaded->resident_before_bytes);
   report.load.heap_growth_bytes =
