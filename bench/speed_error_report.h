@@ -2,10 +2,12 @@
 // (one row per scene, hider and sample count) and the Markdown report docs/performance.md.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <ostream>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/equal_error.h"
@@ -13,10 +15,21 @@
 
 namespace darc::bench {
 
+// Work counted during one render of a setting (the first of its runs; renders are
+// deterministic, so every run counts the same). From darc's FrameStats::counters, or for the
+// Embree peer its rtcIntersect1 calls.
+struct WorkCounters {
+  uint64_t primary_rays = 0;
+  uint64_t segment_tests = 0;   // ray-curve segment tests (darc)
+  uint64_t fragments = 0;       // A-buffer fragments (distance hider)
+  uint64_t cells_visited = 0;   // grid cells visited (darc)
+  uint64_t intersect_calls = 0;  // rtcIntersect1 calls (Embree peer)
+};
+
 // One render setting of one scene, measured.
 struct Measurement {
   std::string scene;
-  std::string hider;         // "distance" or "stochastic"
+  std::string hider;         // "distance", "stochastic" or "embree"
   int samples_per_axis = 1;  // N of the N x N samples per pixel
   double seconds = 0;        // wall clock of render_frame, the minimum over `runs` runs
   int runs = 0;
@@ -37,13 +50,38 @@ struct WidthStats {
   double min = 0, p5 = 0, median = 0, p95 = 0, max = 0;
 };
 
+// Loading and building one scene, and the memory it took (bench/scene_loading.h).
+struct SceneLoadCost {
+  uint64_t rib_bytes = 0;
+  double parse_seconds = 0;         // RIB text -> Scene
+  double build_seconds = 0;         // darc's acceleration structure (RunDescription::accelerator)
+  uint64_t accelerator_bytes = 0;   // its own count (Accelerator::memory_bytes)
+  uint64_t curve_bytes = 0;         // the CurveSet's own count (CurveSet::memory_bytes)
+  uint64_t resident_growth_bytes = 0;  // resident set after parse + build minus before
+  uint64_t heap_growth_bytes = 0;      // C heap in use after parse + build minus before: the Scene
+  uint64_t peak_resident_bytes = 0;    // VmHWM at the end of the scene's measurements (0: unknown)
+  bool peak_is_per_scene = false;      // the peak was reset before the scene (else: since process start)
+  // The Embree peer's scene (zero when not measured).
+  double embree_build_seconds = 0;     // rtcCommitScene
+  uint64_t embree_bytes = 0;           // Embree's own allocations (its memory monitor), peak
+  uint64_t embree_resident_growth_bytes = 0;
+};
+
 struct SceneReport {
   std::string name;
   int xres = 0, yres = 0;
   size_t curve_segments = 0;
   WidthStats widths;
   double reference_seconds = 0;  // 0 when it came from the cache
-  std::vector<Measurement> settings;           // ordered: distance by samples, then stochastic by samples
+  int reference_samples_per_axis = 0;  // 0: the run's (RunDescription::reference_samples_per_axis)
+  SceneLoadCost load;
+  std::vector<Measurement> settings;           // ordered: distance by samples, then stochastic, then embree
+  // The work of settings[i] is work[i] (empty when not counted; kept apart from Measurement so
+  // that its aggregate layout, which the CSV tests spell out, stays as it is).
+  std::vector<WorkCounters> work;
+  // The Embree peer's N x N image against darc's stochastic N x N image (the same rays): how
+  // well the two agree, by N. Empty when the peer was not measured.
+  std::vector<std::pair<int, ImageError>> embree_vs_stochastic;
   std::vector<VariantMeasurement> coverage;    // distance 1x1, one per coverage model
   std::vector<VariantMeasurement> sort_interval;  // distance 1x1, empty when not measured
 };
@@ -58,6 +96,10 @@ struct RunDescription {
   unsigned reference_seed = 0;
   int max_runs = 0;
   double repeat_budget_seconds = 0;
+  int threads = 0;           // render threads actually used
+  std::string embree;        // "Embree 3.13.5" when the peer was measured, else empty
+  bool quick = false;        // the smoke run (reduced resolution and reference)
+  std::string accelerator;   // darc's acceleration structure: "bvh" or "grid"
 };
 
 // The CSV's header, in column order.

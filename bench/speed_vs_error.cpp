@@ -1,7 +1,9 @@
 // The speed-against-error benchmark: renders each scene in-process with the distance hider
-// (1x1, 2x2) and the stochastic hider (1x1 .. 16x16), times render_frame, compares every image
-// with a cached high-sample stochastic reference, and writes the CSV, the log-log plot and
-// docs/performance.md. Run it through scripts/bench-speed-vs-error, which generates the scenes.
+// (1x1, 2x2) and the stochastic hider (1x1 .. 16x16), and with --embree the Embree peer
+// (1x1 .. 16x16, when built), times the renders, compares every image with a cached high-sample
+// stochastic reference, and writes the CSV, the log-log plot and docs/performance.md (or, with
+// --report-stem 640, docs/performance-640.md with work per ray and memory). Run it through
+// scripts/bench-speed-vs-error, which generates the scenes.
 //
 //   speed_vs_error [options] NAME=FILE.rib...
 #include <CLI/CLI.hpp>
@@ -10,9 +12,11 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -21,11 +25,15 @@
 
 #include "bench/image_error.h"
 #include "bench/log_log_plot.h"
+#include "bench/process_memory.h"
 #include "bench/reference_cache.h"
+#include "bench/scene_loading.h"
+#include "bench/speed_error_640.h"
 #include "bench/speed_error_report.h"
-#include "core/scene_builder.h"
 #include "integrator/render_frame.h"
-#include "parser/rib_parser.h"
+#ifdef DARC_BENCH_HAVE_EMBREE
+#include "bench/embree_render.h"
+#endif
 
 namespace darc::bench {
 namespace {
@@ -35,7 +43,7 @@ using Clock = std::chrono::steady_clock;
 
 // The measured settings (N of N x N samples per pixel), cheapest first.
 constexpr int kDistanceSamples[] = {1, 2};
-constexpr int kStochasticSamples[] = {1, 2, 4, 8, 16};
+constexpr int kStochasticSamples[] = {1, 2, 4, 8, 16};  // also the Embree peer's
 // The A-buffer sort intervals measured (grid layers between sorts).
 constexpr int kMinSortInterval = 1, kMaxSortInterval = 10;
 // The seed of every measured render (the reference uses its own, see ReferenceSettings).
@@ -53,38 +61,27 @@ struct Options {
   std::vector<std::string> scenes;                // NAME=FILE.rib
   std::string sort_interval_scenes;  // comma-separated names; empty: all
   ReferenceSettings reference;
+  std::vector<std::string> reference_overrides;  // NAME=N: that scene's reference is N x N
   int max_runs = kDefaultMaxRuns;
   double repeat_budget_seconds = kDefaultRepeatBudgetSeconds;
   int threads = 0;  // 0: all cores
+  int stochastic_max = 16;    // costliest stochastic (and Embree) N x N measured
+  bool variants = true;       // the coverage-model and sort-interval sweeps of the distance hider
+  bool embree = false;        // measure the Embree peer (when built)
+  std::string report_stem;    // "640": performance-640.md etc. with the 640 report's tables
+  bool quick = false;         // label the report as the quick smoke run
+  std::string accelerator = to_string(kDefaultAccelerator);  // "bvh" or "grid"
 };
 
+AcceleratorKind accelerator_kind(const Options& o) {
+  return o.accelerator == "grid" ? AcceleratorKind::Grid : AcceleratorKind::Bvh;
+}
+
+int render_threads(const Options& o) {
+  return o.threads > 0 ? o.threads : std::max(1, int(std::thread::hardware_concurrency()));
+}
+
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-std::optional<std::string> read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Parses RIB text and returns its first frame with the acceleration structure built, or
-// nullopt (with the diagnostics printed) when it has errors or no frame.
-std::optional<Scene> load_scene(const std::string& text, const std::string& name) {
-  Diagnostics diag;  // prints to stderr
-  std::optional<Scene> scene;
-  SceneBuilder::Callbacks cb;
-  cb.frame_ready = [&](Scene&& s) {
-    if (!scene) scene.emplace(std::move(s));
-  };
-  SceneBuilder builder(diag, cb);
-  RibParser parser(builder, diag);
-  parser.parse_string(text, name);
-  builder.finish(SourceLoc{});
-  if (diag.error_count() > 0 || !scene) return std::nullopt;
-  scene->build_acceleration();
-  return scene;
-}
 
 // Width in pixels of every visible segment end: the world width over the world size of a pixel
 // at that point (from the rays through neighbouring raster positions).
@@ -118,7 +115,17 @@ struct TimedImage {
   Image image;
   double seconds = 0;  // minimum over the runs
   int runs = 0;
+  WorkCounters work;   // of the first run (every run counts the same)
 };
+
+WorkCounters work_of(const RayCounters& c) {
+  WorkCounters w;
+  w.primary_rays = c.primary_rays;
+  w.segment_tests = c.segment_tests;
+  w.fragments = c.fragments;
+  w.cells_visited = c.cells_visited;
+  return w;
+}
 
 // Renders `scene` at N x N samples, repeating cheap renders; only render_frame is timed.
 TimedImage render_timed(Scene& scene, const RenderOptions& ro, int samples_per_axis, int max_runs,
@@ -134,7 +141,10 @@ TimedImage render_timed(Scene& scene, const RenderOptions& ro, int samples_per_a
     double t = seconds_since(t0);
     total += t;
     if (best.runs == 0 || t < best.seconds) best.seconds = t;
-    if (best.runs == 0) best.image = std::move(image);  // deterministic: every run gives the same image
+    if (best.runs == 0) {  // deterministic: every run gives the same image and counts
+      best.image = std::move(image);
+      best.work = work_of(stats.counters);
+    }
     ++best.runs;
   }
   return best;
@@ -148,20 +158,30 @@ RenderOptions render_options(HiderKind hider, const Options& o) {
   return ro;
 }
 
+// The scene's reference settings: the run's, or NAME=N from --reference-samples-for.
+ReferenceSettings reference_for(const Options& o, const std::string& name) {
+  ReferenceSettings r = o.reference;
+  for (const std::string& arg : o.reference_overrides) {
+    size_t eq = arg.find('=');
+    if (eq != std::string::npos && arg.substr(0, eq) == name) r.samples_per_axis = std::max(1, std::atoi(arg.c_str() + eq + 1));
+  }
+  return r;
+}
+
 std::optional<Image> reference_image(Scene& scene, const std::string& text, const std::string& name,
-                                     const Options& o, double& render_seconds) {
-  std::string key = reference_cache_key(text, scene.output.xres, scene.output.yres, o.reference);
+                                     const Options& o, const ReferenceSettings& settings, double& render_seconds) {
+  std::string key = reference_cache_key(text, scene.output.xres, scene.output.yres, settings);
   std::string path = reference_cache_path(o.cache_dir, name, key);
   render_seconds = 0;
   if (std::optional<Image> cached = load_cached_reference(path, key, scene.output.xres, scene.output.yres)) {
     std::fprintf(stderr, "  reference: %s (cached)\n", path.c_str());
     return cached;
   }
-  std::fprintf(stderr, "  reference: rendering stochastic %dx%d ...\n", o.reference.samples_per_axis,
-               o.reference.samples_per_axis);
+  std::fprintf(stderr, "  reference: rendering stochastic %dx%d ...\n", settings.samples_per_axis,
+               settings.samples_per_axis);
   RenderOptions ro = render_options(HiderKind::Stochastic, o);
-  ro.seed = o.reference.seed;
-  TimedImage ref = render_timed(scene, ro, o.reference.samples_per_axis, 1, 0);
+  ro.seed = settings.seed;
+  TimedImage ref = render_timed(scene, ro, settings.samples_per_axis, 1, 0);
   render_seconds = ref.seconds;
   std::string error = store_cached_reference(path, ref.image, key);
   if (!error.empty()) std::fprintf(stderr, "speed_vs_error: warning: reference not cached: %s\n", error.c_str());
@@ -190,6 +210,84 @@ bool measures_sort_interval(const Options& o, const std::string& name) {
   return false;
 }
 
+// The Embree peer's settings, 1x1 .. stochastic_max, appended to the report (when built).
+// `stochastic` holds darc's stochastic image per N of the same run, for the agreement check.
+void measure_embree(const Scene& scene, const Options& o, const Image& reference,
+                    const std::map<int, Image>& stochastic, SceneReport& report) {
+#ifdef DARC_BENCH_HAVE_EMBREE
+  uint64_t resident_before = resident_bytes();
+  EmbreeBuildStats build;
+  std::string error;
+  std::unique_ptr<EmbreeScene> embree = EmbreeScene::build(scene, o.threads, build, error);
+  if (!embree) {
+    std::fprintf(stderr, "speed_vs_error: warning: no Embree rows: %s\n", error.c_str());
+    return;
+  }
+  report.load.embree_build_seconds = build.seconds;
+  report.load.embree_bytes = build.embree_bytes;
+  report.load.embree_resident_growth_bytes = resident_bytes() - std::min(resident_bytes(), resident_before);
+  std::fprintf(stderr, "  embree     BVH %.3f s, %.1f MB\n", build.seconds, double(build.embree_bytes) / 1e6);
+  auto render = [&](int n) {
+    Diagnostics diag([](const Diagnostic&) {});
+    EmbreeRenderStats stats;
+    Image image = render_embree(*embree, {n, o.threads, kMeasuredSeed}, diag, stats);
+    return std::make_pair(std::move(image), stats);
+  };
+  render(1);  // untimed, as the first darc render: thread pool start-up and page faults
+  for (int n : kStochasticSamples) {
+    if (n > o.stochastic_max) break;
+    TimedImage best;
+    double total = 0;
+    while (best.runs < std::max(1, o.max_runs) && (best.runs == 0 || total < o.repeat_budget_seconds)) {
+      auto [image, stats] = render(n);
+      total += stats.render_seconds;
+      if (best.runs == 0 || stats.render_seconds < best.seconds) best.seconds = stats.render_seconds;
+      if (best.runs == 0) {
+        best.image = std::move(image);
+        best.work.primary_rays = stats.primary_rays;
+        best.work.intersect_calls = stats.intersect_calls;
+      }
+      ++best.runs;
+    }
+    Measurement m{report.name, "embree", n, best.seconds, best.runs, error_against(best.image, reference)};
+    std::fprintf(stderr, "  %-10s %2dx%-2d %8.3f s (%d runs)  rmse %.4g  max %.4g\n", m.hider.c_str(), n, n,
+                 m.seconds, m.runs, m.error.rmse, m.error.max_error);
+    report.settings.push_back(m);
+    report.work.push_back(best.work);
+    if (auto it = stochastic.find(n); it != stochastic.end()) {
+      ImageError agreement = error_against(best.image, it->second);
+      report.embree_vs_stochastic.push_back({n, agreement});
+      std::fprintf(stderr, "  embree %dx%d vs darc stochastic %dx%d (same rays): rmse %.3g  max %.3g\n", n, n, n, n,
+                   agreement.rmse, agreement.max_error);
+    }
+  }
+#else
+  (void)scene, (void)o, (void)reference, (void)stochastic, (void)report;
+#endif
+}
+
+void measure_variants(Scene& scene, const Options& o, const Image& reference, SceneReport& report) {
+  const std::pair<CoverageModel, const char*> models[] = {
+      {CoverageModel::Box, "box"}, {CoverageModel::Disc, "disc"}, {CoverageModel::Square, "square"}};
+  for (const auto& [model, label] : models) {
+    RenderOptions ro = render_options(HiderKind::Distance, o);
+    ro.distance.coverage = model;
+    report.coverage.push_back(measure_variant(scene, ro, o, reference, label));
+  }
+  {
+    RenderOptions ro = render_options(HiderKind::Distance, o);
+    ro.distance.coverage_masks = false;
+    report.coverage.push_back(measure_variant(scene, ro, o, reference, "scalar"));
+  }
+  if (measures_sort_interval(o, report.name)) {
+    for (int interval = kMinSortInterval; interval <= kMaxSortInterval; ++interval) {
+      RenderOptions ro = render_options(HiderKind::Distance, o);
+      ro.distance.sort_interval = interval;
+      report.sort_interval.push_back(measure_variant(scene, ro, o, reference, std::to_string(interval)));
+    }
+  }
+}
+
 std::optional<SceneReport> measure_scene(const std::string& name, const std::string& path, const Options& o) {
   std::fprintf(stderr, "%s (%s)\n", name.c_str(), path.c_str());
   std::optional<std::string> text = read_text(path);
@@ -197,53 +295,57 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
     std::fprintf(stderr, "speed_vs_error: error: cannot read %s\n", path.c_str());
     return std::nullopt;
   }
-  std::optional<Scene> scene = load_scene(*text, path);
-  if (!scene) {
+  const bool peak_reset = reset_peak_resident();
+  std::optional<LoadedScene> loaded = load_scene(*text, path, true, accelerator_kind(o));
+  if (!loaded) {
     std::fprintf(stderr, "speed_vs_error: error: %s has errors or no frame\n", path.c_str());
     return std::nullopt;
   }
+  Scene& scene = loaded->scene;
   SceneReport report;
   report.name = name;
-  report.xres = scene->output.xres;
-  report.yres = scene->output.yres;
-  report.curve_segments = scene->curves.size();
-  report.widths = strand_width_stats(*scene);
-  std::optional<Image> reference = reference_image(*scene, *text, name, o, report.reference_seconds);
+  report.xres = scene.output.xres;
+  report.yres = scene.output.yres;
+  report.curve_segments = scene.curves.size();
+  report.widths = strand_width_stats(scene);
+  report.load.rib_bytes = text->size();
+  report.load.parse_seconds = loaded->parse_seconds;
+  report.load.build_seconds = loaded->build_seconds;
+  report.load.accelerator_bytes = scene.accel.memory_bytes();
+  report.load.curve_bytes = scene.curves.memory_bytes();
+  report.load.resident_growth_bytes =
+      loaded->resident_after_bytes - std::min(loaded->resident_after_bytes, loaded->resident_before_bytes);
+  report.load.heap_growth_bytes =
+      loaded->heap_after_bytes - std::min(loaded->heap_after_bytes, loaded->heap_before_bytes);
+  std::fprintf(stderr, "  load: parse %.3f s, acceleration %.3f s, heap +%.1f MB, resident +%.1f MB\n", loaded->parse_seconds,
+               loaded->build_seconds, double(report.load.heap_growth_bytes) / 1e6,
+               double(report.load.resident_growth_bytes) / 1e6);
+  const ReferenceSettings reference_settings = reference_for(o, name);
+  report.reference_samples_per_axis = reference_settings.samples_per_axis;
+  std::optional<Image> reference = reference_image(scene, *text, name, o, reference_settings, report.reference_seconds);
   if (!reference) return std::nullopt;
 
   // One untimed render first: the first render of a process also pays for starting the thread
   // pool and faulting in the scene's pages, which is no property of the setting measured first.
-  render_timed(*scene, render_options(HiderKind::Distance, o), 1, 1, 0);
+  render_timed(scene, render_options(HiderKind::Distance, o), 1, 1, 0);
 
+  std::map<int, Image> stochastic_images;  // by N, for the Embree peer's agreement check
   auto measure = [&](HiderKind hider, int n) {
-    TimedImage t = render_timed(*scene, render_options(hider, o), n, o.max_runs, o.repeat_budget_seconds);
+    TimedImage t = render_timed(scene, render_options(hider, o), n, o.max_runs, o.repeat_budget_seconds);
     Measurement m{name, to_string(hider), n, t.seconds, t.runs, error_against(t.image, *reference)};
+    if (hider == HiderKind::Stochastic && o.embree) stochastic_images[n] = t.image;
     std::fprintf(stderr, "  %-10s %2dx%-2d %8.3f s (%d runs)  rmse %.4g  max %.4g\n", m.hider.c_str(), n, n,
                  m.seconds, m.runs, m.error.rmse, m.error.max_error);
     report.settings.push_back(m);
+    report.work.push_back(t.work);
   };
   for (int n : kDistanceSamples) measure(HiderKind::Distance, n);
-  for (int n : kStochasticSamples) measure(HiderKind::Stochastic, n);
-
-  const std::pair<CoverageModel, const char*> models[] = {
-      {CoverageModel::Box, "box"}, {CoverageModel::Disc, "disc"}, {CoverageModel::Square, "square"}};
-  for (const auto& [model, label] : models) {
-    RenderOptions ro = render_options(HiderKind::Distance, o);
-    ro.distance.coverage = model;
-    report.coverage.push_back(measure_variant(*scene, ro, o, *reference, label));
-  }
-  {
-    RenderOptions ro = render_options(HiderKind::Distance, o);
-    ro.distance.coverage_masks = false;
-    report.coverage.push_back(measure_variant(*scene, ro, o, *reference, "scalar"));
-  }
-  if (measures_sort_interval(o, name)) {
-    for (int interval = kMinSortInterval; interval <= kMaxSortInterval; ++interval) {
-      RenderOptions ro = render_options(HiderKind::Distance, o);
-      ro.distance.sort_interval = interval;
-      report.sort_interval.push_back(measure_variant(*scene, ro, o, *reference, std::to_string(interval)));
-    }
-  }
+  for (int n : kStochasticSamples)
+    if (n <= o.stochastic_max) measure(HiderKind::Stochastic, n);
+  if (o.embree) measure_embree(scene, o, *reference, stochastic_images, report);
+  if (o.variants) measure_variants(scene, o, *reference, report);
+  report.load.peak_resident_bytes = peak_resident_bytes();
+  report.load.peak_is_per_scene = peak_reset;
   return report;
 }
 
@@ -268,6 +370,13 @@ RunDescription describe_run(const Options& o) {
   run.reference_seed = o.reference.seed;
   run.max_runs = o.max_runs;
   run.repeat_budget_seconds = o.repeat_budget_seconds;
+  run.threads = render_threads(o);
+#ifdef DARC_BENCH_HAVE_EMBREE
+  if (o.embree) run.embree = "Embree " + std::to_string(RTC_VERSION_MAJOR) + "." + std::to_string(RTC_VERSION_MINOR) +
+                             "." + std::to_string(RTC_VERSION_PATCH);
+#endif
+  run.quick = o.quick;
+  run.accelerator = o.accelerator;
   return run;
 }
 
@@ -282,14 +391,18 @@ std::vector<PlotSeries> plot_series(const std::vector<SceneReport>& scenes) {
                                                                      {0.55f, 0.34f, 0.29f}}};
   std::vector<PlotSeries> series;
   for (size_t i = 0; i < scenes.size(); ++i) {
-    for (const char* hider : {"stochastic", "distance"}) {
+    for (const char* hider : {"stochastic", "distance", "embree"}) {
       PlotSeries s;
       s.label = scenes[i].name + " " + hider;
       s.color = kSceneColors[i % kSceneColors.size()];
       s.dashed = std::string(hider) == "distance";
+      // The Embree peer: solid like the stochastic hider it is, in the scene's colour halfway to
+      // white.
+      if (std::string(hider) == "embree")
+        for (float& c : s.color) c = 0.5f * (c + 1.0f);
       for (const Measurement& m : scenes[i].settings)
         if (m.hider == hider) s.points.push_back({m.seconds, m.error.rmse});
-      series.push_back(std::move(s));
+      if (!s.points.empty()) series.push_back(std::move(s));
     }
   }
   return series;
@@ -317,13 +430,23 @@ bool write_outputs(const Options& o, const std::vector<SceneReport>& scenes) {
     if (ec) ok = false;
     std::fprintf(stderr, "wrote %s\n", target.c_str());
   };
-  write_file("speed-vs-error.csv", [&](std::ostream& out) { write_speed_error_csv(out, rows); });
-  write_file("performance.md",
-             [&](std::ostream& out) { write_performance_markdown(out, describe_run(o), scenes); });
+  const std::string suffix = o.report_stem.empty() ? "" : "-" + o.report_stem;
+  if (o.report_stem.empty()) {
+    write_file("speed-vs-error.csv", [&](std::ostream& out) { write_speed_error_csv(out, rows); });
+    write_file("performance.md",
+               [&](std::ostream& out) { write_performance_markdown(out, describe_run(o), scenes); });
+  } else {
+    write_file("speed-vs-error" + suffix + ".csv", [&](std::ostream& out) {
+      write_speed_error_640_csv(out, scenes, render_threads(o), o.reference.samples_per_axis);
+    });
+    write_file("performance" + suffix + ".md",
+               [&](std::ostream& out) { write_performance_640_markdown(out, describe_run(o), scenes); });
+  }
 
-  std::string plot_path = (fs::path(o.out_dir) / "speed-vs-error.png").string();
+  std::string plot_path = (fs::path(o.out_dir) / ("speed-vs-error" + suffix + ".png")).string();
   PlotText text;
-  text.title = "darc: RMSE against render time (" + o.size + " scenes; solid: stochastic, dashed: distance)";
+  text.title = "darc: RMSE against render time (" + o.size + " scenes; solid: stochastic, dashed: distance" +
+               (o.embree ? ", pale: Embree)" : ")");
   PlotResult plot = write_log_log_plot(plot_path, plot_series(scenes), text);
   if (!plot.ok) {
     std::fprintf(stderr, "speed_vs_error: error: %s\n", plot.error.c_str());
@@ -353,8 +476,24 @@ int main(int argc, char** argv) {
   app.add_option("--repeat-budget", o.repeat_budget_seconds, "repeat a setting while its runs took less (s)");
   app.add_option("--sort-interval-scenes", o.sort_interval_scenes, "comma-separated scenes for the sort-interval sweep (default all)");
   app.add_option("--threads", o.threads, "render threads, 0 = all cores");
+  app.add_option("--reference-samples-for", o.reference_overrides, "NAME=N: scene NAME's reference is N x N");
+  app.add_option("--stochastic-max", o.stochastic_max, "costliest stochastic and Embree N x N measured")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+  app.add_flag("!--no-variants", o.variants, "skip the coverage-model and sort-interval sweeps");
+  app.add_flag("--embree", o.embree, "also measure the Embree peer (needs a build with Embree)");
+  app.add_option("--report-stem", o.report_stem,
+                 "write performance-STEM.md, speed-vs-error-STEM.csv/.png with work per ray and memory");
+  app.add_flag("--quick", o.quick, "label the report as the quick smoke run");
+  app.add_option("--accelerator", o.accelerator, "darc's acceleration structure (default: the renderer's)")
+      ->check(CLI::IsMember({"bvh", "grid"}));
   app.add_option("scenes", o.scenes, "NAME=FILE.rib")->required();
   CLI11_PARSE(app, argc, argv);
+#ifndef DARC_BENCH_HAVE_EMBREE
+  if (o.embree) {
+    std::fprintf(stderr, "speed_vs_error: warning: built without Embree (scripts/setup --bench): no Embree rows\n");
+    o.embree = false;
+  }
+#endif
 
   std::vector<SceneReport> reports;
   for (const std::string& arg : o.scenes) {

@@ -1,6 +1,10 @@
 // Generates the demo and benchmark hair scenes as RIB text on standard output:
 //   darc_make_scene KIND SIZE [RES]
-// KIND: furball | hairball | grass | transparent-hair;  SIZE: small | large | demo.
+// KIND: furball | hairball | grass | transparent-hair | scalp-hair | hairball-medium;
+// SIZE: small | large | demo | 640.
+// SIZE 640 is the 640x480 benchmark (bench/speed_vs_error --size 640): every image is RES x
+// RES*3/4 (RES defaults to 640) and the first four kinds have about 30k cubic segments,
+// scalp-hair 10k strands x 15 segments, hairball-medium 300k segments.
 // Everything is a deterministic function of the arguments (fixed-seed generator), so the
 // benchmark can regenerate a scene and compare it with a cached reference.
 #include <cmath>
@@ -16,9 +20,13 @@ struct V3 {
   double x, y, z;
 };
 V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+V3 operator-(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 V3 operator*(V3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+V3 cross(V3 a, V3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+double length(V3 a) { return std::sqrt(dot(a, a)); }
 V3 normalized(V3 a) {
-  double l = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+  double l = length(a);
   return l > 0 ? a * (1 / l) : V3{0, 0, 1};
 }
 
@@ -75,8 +83,24 @@ void emit_strands(const std::vector<std::vector<V3>>& strands, double root_width
   std::printf(" ]\n");
 }
 
-int strands_for(const std::string& size, int small, int large, int demo) {
+// The 640x480 benchmark's segment budget per scene (about 30k cubic segments).
+constexpr int kBench640Segments = 30000;
+
+// Strands of a scene: the counts of the small/large/demo sizes as given, and for SIZE 640 as
+// many strands of `segments_per_strand` segments as make kBench640Segments.
+int strands_for(const std::string& size, int small, int large, int demo, int segments_per_strand) {
+  if (size == "640") return (kBench640Segments + segments_per_strand - 1) / segments_per_strand;
   return size == "large" ? large : size == "demo" ? demo : small;
+}
+
+// The image size: square RES x RES for the small/large/demo sizes (as they always were), the
+// 640x480 aspect for SIZE 640.
+struct ImageSize {
+  int xres, yres;
+  int short_side() const { return xres < yres ? xres : yres; }
+};
+ImageSize square_or_640(const std::string& size, int res) {
+  return size == "640" ? ImageSize{res, res * 3 / 4} : ImageSize{res, res};
 }
 
 // World-space size of one pixel at `depth` in front of a perspective camera with field of view
@@ -88,11 +112,12 @@ double pixel_size(double depth, double fov, int short_side) {
 
 void furball(const std::string& size, int res) {
   Rng rng(1);
-  const double fov = 30, px = pixel_size(5, fov, res);
-  header(res, res, fov, "Translate 0 0 5", "furball.exr");
+  const ImageSize image = square_or_640(size, res);
+  const double fov = 30, px = pixel_size(5, fov, image.short_side());
+  header(image.xres, image.yres, fov, "Translate 0 0 5", "furball.exr");
   std::printf("AttributeBegin\nColor [0.35 0.22 0.12]\nSurface \"matte\"\nSphere 0.8 -0.8 0.8 360\nAttributeEnd\n");
   std::printf("AttributeBegin\nColor [0.8 0.55 0.3]\nSurface \"hair\" \"Ks\" [0.3] \"roughness\" [0.08]\n");
-  int n = strands_for(size, 1500, 8000, 12000);
+  int n = strands_for(size, 1500, 8000, 12000, 3);
   std::vector<std::vector<V3>> strands;
   for (int i = 0; i < n; ++i) {
     V3 dir = rng.unit_vector();
@@ -110,12 +135,14 @@ void furball(const std::string& size, int res) {
   std::printf("AttributeEnd\nWorldEnd\n");
 }
 
-void hairball(const std::string& size, int res) {
+// `n_strands` overrides the size's strand count when positive (hairball-medium).
+void hairball(const std::string& size, int res, int n_strands = 0) {
   Rng rng(2);
-  const double fov = 30, px = pixel_size(5, fov, res);
-  header(res, res, fov, "Translate 0 0 5", "hairball.exr");
+  const ImageSize image = square_or_640(size, res);
+  const double fov = 30, px = pixel_size(5, fov, image.short_side());
+  header(image.xres, image.yres, fov, "Translate 0 0 5", "hairball.exr");
   std::printf("AttributeBegin\nColor [0.6 0.45 0.25]\nSurface \"hair\" \"Ks\" [0.4] \"roughness\" [0.05]\n");
-  int n = strands_for(size, 400, 1200, 2000);
+  int n = n_strands > 0 ? n_strands : strands_for(size, 400, 1200, 2000, 7);
   std::vector<std::vector<V3>> strands;
   for (int i = 0; i < n; ++i) {
     V3 p = rng.unit_vector() * (0.9 * std::cbrt(rng.uniform()));
@@ -135,7 +162,7 @@ void hairball(const std::string& size, int res) {
 void grass(const std::string& size, int res) {
   Rng rng(3);
   const double fov = 40;
-  const int yres = res * 3 / 4;
+  const int yres = res * 3 / 4;  // every size (SIZE 640 included) is 4:3
   // A low camera looking across the field: the nearest blades (about 2 units away) are 2 pixels
   // wide at the root, the far ones (40 units) a tenth of a pixel.
   const double px = pixel_size(2, fov, yres);
@@ -143,7 +170,7 @@ void grass(const std::string& size, int res) {
   std::printf("AttributeBegin\nColor [0.25 0.18 0.1]\nSurface \"matte\"\n");
   std::printf("Polygon \"P\" [-30 0 0  30 0 0  30 0 60  -30 0 60]\nAttributeEnd\n");
   std::printf("AttributeBegin\nColor [0.2 0.6 0.15]\nSurface \"plastic\" \"Ks\" [0.2]\n");
-  int n = strands_for(size, 6000, 30000, 20000);
+  int n = strands_for(size, 6000, 30000, 20000, 3);
   std::vector<std::vector<V3>> strands;
   for (int i = 0; i < n; ++i) {
     double z = 1 + 40 * rng.uniform() * rng.uniform();
@@ -164,10 +191,11 @@ void grass(const std::string& size, int res) {
 
 void transparent_hair(const std::string& size, int res) {
   Rng rng(4);
-  const double fov = 30, px = pixel_size(4, fov, res);
-  header(res, res, fov, "Translate 0 0 4", "transparent-hair.exr");
+  const ImageSize image = square_or_640(size, res);
+  const double fov = 30, px = pixel_size(4, fov, image.short_side());
+  header(image.xres, image.yres, fov, "Translate 0 0 4", "transparent-hair.exr");
   std::printf("AttributeBegin\nColor [0.9 0.8 0.6]\nOpacity [0.4 0.4 0.4]\nSurface \"matte\"\n");
-  int n = strands_for(size, 300, 1200, 3000);
+  int n = strands_for(size, 300, 1200, 3000, 4);
   std::vector<std::vector<V3>> strands;
   for (int i = 0; i < n; ++i) {
     double x = (rng.uniform() - 0.5) * 1.6;
@@ -183,15 +211,99 @@ void transparent_hair(const std::string& size, int res) {
   std::printf("AttributeEnd\nWorldEnd\n");
 }
 
+// A head of long hair, in the manner of a scanned groom: strands grown from the upper and back
+// part of a scalp sphere, combed down over it by gravity, gathered into clumps towards the tips
+// and waved, over a matte head sphere. 15 segments per strand (10k strands at SIZE 640).
+constexpr double kHeadRadius = 1.0;
+// Strands are kept this far outside the head so that they lie on the scalp, not in it.
+constexpr double kScalpClearance = 1.03;
+constexpr int kScalpPointsPerStrand = 16;  // b-spline: 16 points (+2 repeated ends) = 15 segments
+constexpr int kStrandsPerClump = 25;
+
+// True where hair grows on the unit sphere: the crown, the back and the sides down to the
+// nape, not the face (the camera looks at the head from -z).
+bool on_scalp(V3 d) { return d.y > 0.35 || (d.z > -0.2 && d.y > -0.45 + 0.4 * std::abs(d.x)); }
+
+// The direction strands are combed in: down, and back away from the face (at -z).
+const V3 kCombDirection = normalized(V3{0, -1, 0.2});
+
+// One strand grown from `root_dir` on the scalp: starts along the normal, bends towards the
+// comb direction step by step, and slides over the head instead of entering it.
+std::vector<V3> grow_combed_strand(V3 root_dir, double strand_length) {
+  std::vector<V3> s;
+  V3 p = root_dir * (kHeadRadius * kScalpClearance), d = normalized(root_dir * 0.4 + kCombDirection * 0.6);
+  const double step = strand_length / (kScalpPointsPerStrand - 1);
+  for (int k = 0; k < kScalpPointsPerStrand; ++k) {
+    s.push_back(p);
+    d = normalized(d * 0.55 + kCombDirection * 0.45);
+    p = p + d * step;
+    if (length(p) < kHeadRadius * kScalpClearance) p = normalized(p) * (kHeadRadius * kScalpClearance);
+  }
+  return s;
+}
+
+void scalp_hair(const std::string& size, int res) {
+  Rng rng(5);
+  const ImageSize image = square_or_640(size, res);
+  const double fov = 30, px = pixel_size(7.5, fov, image.short_side());
+  // A view from behind and to the side, slightly above, so that the crown, a side and the back
+  // show, with the hair falling to the shoulders (y about -2) in the frame.
+  header(image.xres, image.yres, fov, "Translate 0 0.3 7.5\nRotate 10 1 0 0\nRotate 145 0 1 0", "scalp-hair.exr");
+  std::printf("AttributeBegin\nColor [0.8 0.62 0.5]\nSurface \"matte\"\nSphere %g %g %g 360\nAttributeEnd\n",
+              kHeadRadius, -kHeadRadius, kHeadRadius);
+  std::printf("AttributeBegin\nColor [0.45 0.3 0.16]\nSurface \"hair\" \"Ks\" [0.35] \"roughness\" [0.06]\n");
+  const int n = size == "640" ? 10000 : strands_for(size, 1000, 3000, 6000, 15);
+  std::vector<std::vector<V3>> strands;
+  while (int(strands.size()) < n) {
+    V3 clump_dir = rng.unit_vector();
+    if (!on_scalp(clump_dir)) continue;
+    const double clump_length = 1.6 + 0.8 * rng.uniform();
+    std::vector<V3> guide = grow_combed_strand(clump_dir, clump_length);
+    // Waves across the strand's fall, the same phase for a whole clump (as combed hair).
+    const V3 across = normalized(cross(V3{0, 1, 0}, clump_dir) + V3{1e-3, 0, 0});
+    const double wave_phase = 2 * std::numbers::pi * rng.uniform(), wave_amplitude = 0.02 + 0.03 * rng.uniform();
+    for (int j = 0; j < kStrandsPerClump && int(strands.size()) < n; ++j) {
+      V3 dir = normalized(clump_dir + rng.unit_vector() * 0.12);
+      if (!on_scalp(dir)) dir = clump_dir;
+      std::vector<V3> s = grow_combed_strand(dir, clump_length * (0.9 + 0.15 * rng.uniform()));
+      const double clumping = 0.5 + 0.4 * rng.uniform();  // how far the tip is pulled onto the guide
+      for (size_t k = 0; k < s.size(); ++k) {
+        double t = double(k) / double(s.size() - 1);
+        V3 pulled = s[k] + (guide[k] - s[k]) * (clumping * t * t);
+        V3 waved = pulled + across * (wave_amplitude * t * std::sin(wave_phase + 5 * std::numbers::pi * t));
+        if (length(waved) < kHeadRadius * kScalpClearance) waved = normalized(waved) * (kHeadRadius * kScalpClearance);
+        s[k] = waved;
+      }
+      strands.push_back(std::move(s));
+    }
+  }
+  emit_strands(strands, 0.9 * px, 0.35 * px);
+  std::printf("AttributeEnd\nWorldEnd\n");
+}
+
+// The hair ball with ten times the strands (300k segments at SIZE 640): the same density of
+// pixels per strand, ten times deeper, for the cost of depth complexity and of memory.
+constexpr int kMediumHairballFactor = 10;
+void hairball_medium(const std::string& size, int res) {
+  hairball(size, res, kMediumHairballFactor * strands_for(size, 400, 1200, 2000, 7));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: darc_make_scene furball|hairball|grass|transparent-hair small|large|demo [RES]\n");
+    std::fprintf(stderr,
+                 "usage: darc_make_scene furball|hairball|grass|transparent-hair|scalp-hair|hairball-medium "
+                 "small|large|demo|640 [RES]\n");
     return 2;
   }
   std::string kind = argv[1], size = argv[2];
-  int res = argc > 3 ? std::atoi(argv[3]) : (size == "large" ? 128 : size == "demo" ? 480 : 64);
+  if (size != "small" && size != "large" && size != "demo" && size != "640") {
+    std::fprintf(stderr, "darc_make_scene: unknown size \"%s\" (small, large, demo or 640)\n", size.c_str());
+    return 2;
+  }
+  int res = argc > 3 ? std::atoi(argv[3])
+                     : (size == "large" ? 128 : size == "demo" ? 480 : size == "640" ? 640 : 64);
   if (res < 8 || res > 8192) {
     std::fprintf(stderr, "darc_make_scene: resolution must be in [8, 8192]\n");
     return 2;
@@ -200,6 +312,8 @@ int main(int argc, char** argv) {
   else if (kind == "hairball") hairball(size, res);
   else if (kind == "grass") grass(size, res);
   else if (kind == "transparent-hair") transparent_hair(size, res);
+  else if (kind == "scalp-hair") scalp_hair(size, res);
+  else if (kind == "hairball-medium") hairball_medium(size, res);
   else {
     std::fprintf(stderr, "darc_make_scene: unknown scene \"%s\"\n", kind.c_str());
     return 2;
