@@ -138,12 +138,9 @@ class ABuffer {
   size_t fragments_added() const { return added_; }
 
  private:
-  void sort_pending() {
-    // Stable tie-break by strand: coplanar fragments composite in the same order on every run.
-    std::sort(pending_.begin(), pending_.end(), [](const Fragment& a, const Fragment& b) {
-      return a.t < b.t || (a.t == b.t && a.strand < b.strand);
-    });
-  }
+  // Depth order, ties by strand: coplanar fragments composite in the same order on every run.
+  static bool nearer(const Fragment& a, const Fragment& b) { return a.t < b.t || (a.t == b.t && a.strand < b.strand); }
+  void sort_pending() { std::sort(pending_.begin(), pending_.end(), nearer); }
 
   template <class Shade>
   ShadedFragment weighted(const Fragment& f, Shade& shade) const {
@@ -251,10 +248,24 @@ class ABuffer {
   void merge_farthest(Shade& shade) {
     const size_t n = pending_.size();
     if (n < 2) return;  // (never: called when the list is over full)
-    sort_pending();
-    const Fragment far = pending_[n - 1];
+    // The two farthest by one pass, not a sort per added fragment: a footprint much larger than
+    // the strands (a thumbnail of dense hair) adds thousands of fragments past the cap.
+    size_t far_i = 0, near_i = 1;
+    if (nearer(pending_[far_i], pending_[near_i])) std::swap(far_i, near_i);
+    for (size_t i = 2; i < n; ++i) {
+      if (nearer(pending_[far_i], pending_[i])) {
+        near_i = far_i;
+        far_i = i;
+      } else if (nearer(pending_[near_i], pending_[i])) {
+        near_i = i;
+      }
+    }
+    const Fragment far = pending_[far_i];
+    // Remove the farthest (order does not matter: compositing sorts).
+    pending_[far_i] = pending_[n - 1];
+    if (near_i == n - 1) near_i = far_i;
     pending_.pop_back();
-    Fragment& near = pending_[n - 2];
+    Fragment& near = pending_[near_i];
     ShadedFragment a = weighted(near, shade), b = weighted(far, shade);
     near.preshaded = true;
     near.color = a.Ci + mul(Vec3f{1, 1, 1} - a.Oi, b.Ci);

@@ -1,5 +1,7 @@
 #include "parser/lexer.h"
 
+#include "parser/simple_decimal.h"
+
 #include <fmt/format.h>
 #include <zlib.h>
 
@@ -247,15 +249,23 @@ size_t Lexer::read_numbers(std::vector<float>& out) {
   for (;;) {
     skip_whitespace_and_comments();
     if (pos_ >= text_.size() || !starts_number(static_cast<unsigned char>(text_[pos_]))) break;
-    const size_t begin = pos_, end = token_end(text_, pos_);
-    const char* first = text_.data() + begin;
+    // from_chars stops at the first byte that is not part of the number; the number is a whole
+    // token only if a delimiter follows (else scan_number reports it).
+    const char* first = text_.data() + pos_;
+    const char* const text_end = text_.data() + text_.size();
     if (*first == '+') ++first;  // from_chars does not take RIB's leading '+'
+    if (*first == '+') break;    // "++2": scan_number reports it
     double value = 0;
-    auto [ptr, ec] = std::from_chars(first, text_.data() + end, value);
-    // Anything but a plain finite in-range number goes to scan_number for its message.
-    if (*first == '+' || ec != std::errc() || ptr != text_.data() + end || !std::isfinite(value) ||
+    const char* ptr = nullptr;
+    if (!parse_simple_decimal(first, text_end, value, ptr)) {
+      auto result = std::from_chars(first, text_end, value);
+      if (result.ec != std::errc()) break;
+      ptr = result.ptr;
+    }
+    if ((ptr != text_end && kTokenByte[static_cast<unsigned char>(*ptr)]) || !std::isfinite(value) ||
         std::fabs(value) > kMaxNumberMagnitude)
       break;
+    const size_t end = size_t(ptr - text_.data());
     out.push_back(static_cast<float>(value));
     pos_ = end;
     ++count;
