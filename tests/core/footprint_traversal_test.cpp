@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/random_footprint_scene.h"
+
 #include <algorithm>
 #include <map>
 #include <random>
@@ -15,52 +17,10 @@ namespace {
 
 constexpr int kBoxes = 150;
 constexpr int kRays = 200;
-// Steps of the brute-force scan along the ray (over the [0, kScanLength] range).
-constexpr int kScanSteps = 2000;
-constexpr float kScanLength = 60.0f;
-// A box counts as "within reach" only with this margin, so that the brute force's float
-// rounding never decides a test.
-constexpr double kReachMargin = 1e-3;
 
-double box_distance(const BBox& b, const Vec3d& p) {
-  Vec3d lo(b.lo), hi(b.hi);
-  Vec3d q{std::clamp(p.x, lo.x, hi.x), std::clamp(p.y, lo.y, hi.y), std::clamp(p.z, lo.z, hi.z)};
-  return length(p - q);
-}
-
-// The smallest scanned t at which the box is within the footprint reach of the ray, or -1.
-double first_t_within_reach(const BBox& b, const Ray& ray, const RayFootprint& fp) {
-  for (int i = 0; i <= kScanSteps; ++i) {
-    double t = double(ray.tmin) + (kScanLength - ray.tmin) * i / kScanSteps;
-    if (t > ray.tmax) break;
-    if (box_distance(b, Vec3d(ray.o) + Vec3d(ray.d) * t) <= fp.reach(float(t)) - kReachMargin) return t;
-  }
-  return -1;
-}
-
-std::vector<BBox> random_boxes(std::mt19937& rng) {
-  std::uniform_real_distribution<float> pos(0.0f, 10.0f), size(0.0f, 1.2f);
-  std::vector<BBox> boxes;
-  for (int i = 0; i < kBoxes; ++i) {
-    Vec3f lo{pos(rng), pos(rng), pos(rng)};
-    boxes.push_back(BBox{lo, lo + Vec3f{size(rng), size(rng), size(rng)}});
-  }
-  return boxes;
-}
-
-// A ray from around the grid towards a point inside it, with a footprint that starts at up to
-// 0.1 and grows by up to 0.06 per unit of t (a wide perspective cone).
-void random_ray(std::mt19937& rng, Ray& ray, RayFootprint& fp) {
-  std::uniform_real_distribution<float> around(-6.0f, 16.0f), inside(0.0f, 10.0f), small(-0.05f, 0.05f),
-      growth(-0.03f, 0.03f);
-  ray.o = Vec3f{around(rng), around(rng), around(rng)};
-  Vec3f target{inside(rng), inside(rng), inside(rng)};
-  ray.d = normalize(target - ray.o);
-  fp.dox = Vec3f{small(rng), small(rng), 0};
-  fp.doy = Vec3f{0, small(rng), small(rng)};
-  fp.ddx = Vec3f{growth(rng), growth(rng), 0};
-  fp.ddy = Vec3f{growth(rng), 0, growth(rng)};
-}
+using test::first_t_within_reach;
+std::vector<BBox> random_boxes(std::mt19937& rng) { return test::random_boxes(rng, kBoxes); }
+using test::random_ray;
 
 // Which cell a span handed to visit_cell belongs to (non-empty cells have distinct starts).
 uint32_t cell_of_span(const UniformGrid& grid, std::span<const uint32_t> prims) {
