@@ -8,32 +8,14 @@
 #include <sstream>
 #include <string>
 
-#include "core/scene_builder.h"
+#include "integrator/built_scene.h"
 #include "integrator/render_frame.h"
 #include "parser/rib_parser.h"
 
 namespace darc {
 namespace {
 
-// The one frame of `rib`, with its acceleration structure built.
-Scene build_scene(const std::string& rib) {
-  Diagnostics diag([](const Diagnostic& d) {
-    if (d.severity == Severity::Error) ADD_FAILURE() << d.str();
-  });
-  std::optional<Scene> scene;
-  SceneBuilder::Callbacks callbacks;
-  callbacks.frame_ready = [&](Scene&& s) { scene.emplace(std::move(s)); };
-  SceneBuilder builder(diag, callbacks);
-  RibParser parser(builder, diag);
-  parser.parse_string(rib, "test.rib");
-  builder.finish(SourceLoc{});
-  if (!scene) {
-    ADD_FAILURE() << "no frame";
-    return Scene{};
-  }
-  scene->build_acceleration();
-  return std::move(*scene);
-}
+using test::build_scene;
 
 // An orthographic W x H image, one world unit per pixel, one sample per pixel, box filter.
 std::string orthographic_frame(int width, int height, const std::string& world) {

@@ -10,8 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/scene_builder.h"
-#include "parser/rib_parser.h"
+#include "integrator/built_scene.h"
 #include "shading/scene_shading.h"
 
 namespace darc {
@@ -21,22 +20,7 @@ namespace {
 constexpr float kTolerance = 1e-4f;
 
 Scene build_scene(const std::string& world) {
-  Diagnostics diag([](const Diagnostic& d) {
-    if (d.severity == Severity::Error) ADD_FAILURE() << d.str();
-  });
-  std::optional<Scene> scene;
-  SceneBuilder::Callbacks callbacks;
-  callbacks.frame_ready = [&](Scene&& s) { scene.emplace(std::move(s)); };
-  SceneBuilder builder(diag, callbacks);
-  RibParser parser(builder, diag);
-  parser.parse_string("Projection \"orthographic\"\nWorldBegin\n" + world + "WorldEnd\n", "test.rib");
-  builder.finish(SourceLoc{});
-  if (!scene) {
-    ADD_FAILURE() << "no frame";
-    return Scene{};
-  }
-  scene->build_acceleration();
-  return std::move(*scene);
+  return test::build_scene("Projection \"orthographic\"\nWorldBegin\n" + world + "WorldEnd\n");
 }
 
 // A straight strand along x at height y and depth z.
