@@ -222,6 +222,7 @@ Bvh Bvh::build(std::span<const BBox> prim_bounds) {
   // Offsets of interior nodes were relative to the node; make them absolute.
   for (uint32_t i = 0; i < binary.size(); ++i)
     if (binary[i].count == 0) binary[i].offset += i;
+  bvh.bounds_ = binary[0].box;
   bvh.nodes_.reserve(binary.size() / 2 + 1);
   Collapser{binary, bvh.nodes_}.collapse(0);
   bvh.nodes_.shrink_to_fit();

@@ -83,6 +83,7 @@ class Bvh {
  private:
   std::vector<Bvh4Node> nodes_;  // nodes_[0] is the root
   std::vector<uint32_t> prims_;
+  BBox bounds_;  // of every primitive in the tree
 };
 
 namespace bvh_detail {
@@ -164,13 +165,8 @@ uint64_t Bvh::footprint_walk(Ray& ray, const RayFootprint& footprint, BvhScratch
   // the smaller of its parent's bound and the reach at its own t1, so a child's grown box lies
   // inside its parent's and keys never decrease along the walk.
   {
-    // The root's bound: no point of the tree lies farther along the ray than the root's largest
-    // depth.
-    BBox root;
-    const Slab4Boxes& b = nodes_[0].boxes;
-    for (int k = 0; k < 4; ++k)
-      if ((nodes_[0].valid >> k) & 1) root.extend(BBox{{b.lo_x[k], b.lo_y[k], b.lo_z[k]}, {b.hi_x[k], b.hi_y[k], b.hi_z[k]}});
-    float far = std::min(bvh_detail::far_depth(ray, root), ray.tmax);
+    // The root's bound: no point of the tree lies farther along the ray than its largest depth.
+    float far = std::min(bvh_detail::far_depth(ray, bounds_), ray.tmax);
     queue.push_back({ray.tmin, reach0 + reach1 * std::max(0.0f, far), 0, 0});
   }
   uint64_t visited = 0;

@@ -99,10 +99,11 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
       }
   };
 
-  int steps = 0;
+  int steps_to_sort = ctx.settings.sort_interval;  // a countdown: no division per step
   bool terminated = false;
   auto progress = [&](float t_final) {
-    if (++steps % ctx.settings.sort_interval != 0 && t_final < ray.tmax) return true;
+    if (--steps_to_sort > 0 && t_final < ray.tmax) return true;
+    if (steps_to_sort <= 0) steps_to_sort = ctx.settings.sort_interval;
     // Nothing pending is final yet: compositing would do nothing.
     if (t_final < abuffer.nearest_pending() && t_final < ray.tmax) return true;
     if (abuffer.composite_until(t_final, shade) > 0 &&
