@@ -18,6 +18,7 @@ struct AppOptions {
   HiderKind hider = HiderKind::Distance;
   int pixel_samples = 0;            // --pixel-samples N (N x N); 0 keeps PixelSamples
   int threads = 0;
+  std::optional<float> contribution_threshold;  // --contribution-threshold (unset: the default)
   std::optional<FrameList> frames;
   bool skip_existing = false;
   std::string stats_path;

@@ -52,6 +52,11 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
   app.add_option("--pixel-samples", o.pixel_samples, "N x N samples per pixel (overrides PixelSamples)")
       ->check(CLI::Range(1, 64));
   app.add_option("--threads", o.threads, "threads, 0 = all cores")->check(CLI::Range(0, 1024));
+  float contribution_threshold = -1;
+  app.add_option("--contribution-threshold", contribution_threshold,
+                 "secondary rays that can change the pixel by less than this are not traced (0: trace all; "
+                 "default " + std::to_string(kDefaultContributionThreshold) + ")")
+      ->check(CLI::Range(0.0f, 1.0f));
   std::string frames;
   app.add_option("--frames", frames, "frames to render, e.g. 1-10,15,20-40x5");
   app.add_flag("--skip-existing", o.skip_existing, "skip frames whose output file already exists");
@@ -75,6 +80,7 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
       if (!o.frames) throw CLI::ValidationError("--frames", error);
     }
     o.hider = hider == "distance" ? HiderKind::Distance : HiderKind::Stochastic;
+    if (contribution_threshold >= 0) o.contribution_threshold = contribution_threshold;
   } catch (const CLI::ParseError& e) {
     exit_now = true;
     // CLI11 returns its own codes (100+) for usage errors; ours is 2 (libraries.md §6).

@@ -52,6 +52,14 @@ std::string output_path(const AppOptions& o, const OutputSettings& out) {
   return name;
 }
 
+// Per kind of secondary ray (shadow, reflection, refraction): traced and pruned.
+nlohmann::json by_kind(const RayCounters& c) {
+  nlohmann::json j = nlohmann::json::object();
+  for (int k = 0; k < kSecondaryKinds; ++k)
+    j[to_string(SecondaryKind(k))] = {{"traced", c.traced_by_kind[k]}, {"pruned", c.pruned_by_kind[k]}};
+  return j;
+}
+
 nlohmann::json counters_json(const RayCounters& c) {
   return {{"primary_rays", c.primary_rays},
           {"secondary_rays", c.secondary_rays},
@@ -61,7 +69,8 @@ nlohmann::json counters_json(const RayCounters& c) {
           {"rays_terminated_early", c.rays_terminated_early},
           {"fragments", c.fragments},
           {"peak_abuffer_length", c.peak_fragments},
-          {"rays_pruned_by_contribution", c.pruned_rays}};
+          {"rays_pruned_by_contribution", c.pruned_rays},
+          {"secondary_by_kind", by_kind(c)}};
 }
 
 // Where the scene's memory goes: the curve segments, the acceleration structure, and the
@@ -143,6 +152,7 @@ int run_render_session(const AppOptions& o) {
     ro.hider = o.hider;
     ro.threads = o.threads;
     ro.seed = o.seed;
+    if (o.contribution_threshold) ro.contribution_threshold = *o.contribution_threshold;
     ro.progress = [&](double f) { progress.update(f); };
     progress.start(path);
     Image image = render_frame(scene, ro, diag, stats);

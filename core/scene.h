@@ -19,6 +19,14 @@
 
 namespace darc {
 
+// How a primitive blocks the light of shadow rays (RI `Attribute "visibility"` "transmission",
+// BMRT's `Attribute "render" "casts_shadows"`).
+enum class Transmission {
+  Os,           // by its opacity Os (the default: every object casts shadows)
+  Opaque,       // fully, whatever its opacity
+  Transparent,  // not at all (invisible to shadow rays)
+};
+
 // The attribute state a primitive was created with (one per primitive request).
 struct Material {
   std::string surface = "defaultsurface";  // RIB shader name as given
@@ -34,6 +42,7 @@ struct Material {
   std::vector<uint32_t> lights;  // indices into Scene::lights that illuminate this primitive
   std::string emissive_area_light;  // AreaLightSource shader the geometry belongs to, if any
   ParamList area_light_params;
+  Transmission transmission = Transmission::Os;
 };
 
 struct LightDesc {
@@ -41,6 +50,9 @@ struct LightDesc {
   ParamList params;
   Matrix4 shader_to_world;  // the current transform when LightSource was called
   SourceLoc loc;
+  // Ray-traced shadows: a "shadowname" parameter (any name; "raytrace" or a shadow-map file we
+  // trace instead), or `Attribute "light" "shadows" "on"` when the light was declared.
+  bool casts_shadows = false;
 };
 
 // Everything the RIB options say about the image, the sampling and the output.
@@ -58,6 +70,9 @@ struct OutputSettings {
   double filter_width[2] = {2, 2};
   double exposure_gain = 1, exposure_gamma = 1;
   std::string hider = "hidden";
+  // Option "trace" "int maxdepth": the longest chain of reflection and refraction rays (PRMan's
+  // name and default). Shadow rays do not count.
+  int trace_max_depth = 10;
 };
 
 // The BVH: on the benchmark scenes at 160x120 (callgrind, instructions in render_frame) the

@@ -5,6 +5,7 @@
 
 #include "core/scene.h"
 #include "core/coverage.h"
+#include "integrator/contribution.h"
 #include "integrator/distance_hider.h"
 #include "integrator/film.h"
 #include "integrator/render_stats.h"
@@ -25,6 +26,9 @@ struct RenderOptions {
   int threads = 0;     // 0: all cores
   uint32_t seed = 0;
   DistanceHiderSettings distance;  // --hider distance only
+  // Secondary rays whose contribution weight (how much they can still change the pixel) is below
+  // this are not traced (--contribution-threshold; 0 traces every ray).
+  float contribution_threshold = kDefaultContributionThreshold;
   // Called with the fraction of tiles done, from one thread at a time.
   std::function<void(double)> progress;
 };

@@ -5,6 +5,13 @@
 
 namespace darc {
 
+// The secondary rays, by what they are traced for.
+enum class SecondaryKind { Shadow = 0, Reflection = 1, Refraction = 2 };
+inline constexpr int kSecondaryKinds = 3;
+inline const char* to_string(SecondaryKind k) {
+  return k == SecondaryKind::Shadow ? "shadow" : k == SecondaryKind::Reflection ? "reflection" : "refraction";
+}
+
 // Per-thread counters, summed at the end of a frame.
 struct RayCounters {
   uint64_t primary_rays = 0;
@@ -16,6 +23,18 @@ struct RayCounters {
   uint64_t fragments = 0;       // A-buffer fragments (distance hider)
   uint64_t peak_fragments = 0;  // longest A-buffer seen
   uint64_t pruned_rays = 0;     // secondary rays not traced because of a negligible contribution weight
+  // Per SecondaryKind: traced (their sum is secondary_rays) and pruned (their sum is pruned_rays).
+  uint64_t traced_by_kind[kSecondaryKinds] = {};
+  uint64_t pruned_by_kind[kSecondaryKinds] = {};
+
+  void count_traced(SecondaryKind k) {
+    ++secondary_rays;
+    ++traced_by_kind[int(k)];
+  }
+  void count_pruned(SecondaryKind k) {
+    ++pruned_rays;
+    ++pruned_by_kind[int(k)];
+  }
 
   RayCounters& operator+=(const RayCounters& o) {
     primary_rays += o.primary_rays;
@@ -27,6 +46,10 @@ struct RayCounters {
     fragments += o.fragments;
     peak_fragments = peak_fragments > o.peak_fragments ? peak_fragments : o.peak_fragments;
     pruned_rays += o.pruned_rays;
+    for (int k = 0; k < kSecondaryKinds; ++k) {
+      traced_by_kind[k] += o.traced_by_kind[k];
+      pruned_by_kind[k] += o.pruned_by_kind[k];
+    }
     return *this;
   }
 };
