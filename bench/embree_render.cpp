@@ -141,7 +141,7 @@ SampleRadiance trace(const RenderContext& ctx, const Ray& camera_ray, EmbreeRend
     if (!point) continue;
     if (first_visible) out.depth = t, first_visible = false;
     ++stats.shaded_hits;
-    ShadeResult r = ctx.shading.surface(point->second).shade(point->first, ctx.shading.lights(point->second));
+    ShadeResult r = shade_unshadowed(ctx.shading.surface(point->second), point->first, ctx.shading.lights(point->second));
     out.color += mul(transmittance, r.Ci);
     transmittance = mul(transmittance, Vec3f{1, 1, 1} - r.Oi);
     if (max_component(transmittance) < kMinTransmittance) {

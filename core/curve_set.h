@@ -11,12 +11,16 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/bbox.h"
 #include "core/vec.h"
 
 namespace darc {
+
+// A strand id no strand has (surfaces, or "skip no strand").
+inline constexpr uint32_t kNoStrand = std::numeric_limits<uint32_t>::max();
 
 inline constexpr size_t kControlPointsPerSegment = 4;  // a cubic Bézier
 inline constexpr size_t kNormalsPerSegment = 2;        // one at each end of the segment

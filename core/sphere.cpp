@@ -104,4 +104,10 @@ bool Sphere::intersect(const Ray& ray, SurfaceHit& hit) const {
   return false;
 }
 
+Vec3f Sphere::normal_at(const Vec3f& p_world) const {
+  Vec3d p = world_to_object.transform_point(Vec3d(p_world));
+  Vec3d n = normalize(world_to_object.transform_normal_by_inverse(p));
+  return Vec3f(flip_normal ? -n : n);
+}
+
 }  // namespace darc

@@ -33,6 +33,10 @@ struct Sphere {
 
   // Nearest hit with t in the open interval (ray.tmin, ray.tmax), or false.
   bool intersect(const Ray& ray, SurfaceHit& hit) const;
+
+  // The unit geometric normal (as intersect's hit.ng) at the sphere point nearest the world
+  // point p (p need not lie exactly on the sphere).
+  Vec3f normal_at(const Vec3f& p_world) const;
 };
 
 }  // namespace darc

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/coverage_mask.h"
+#include "core/curve_set.h"
 #include "core/vec.h"
 
 #include <algorithm>
@@ -14,8 +15,6 @@
 #include <vector>
 
 namespace darc {
-
-inline constexpr uint32_t kNoStrand = std::numeric_limits<uint32_t>::max();
 
 struct Fragment {
   float t = 0;
@@ -124,6 +123,23 @@ class ABuffer {
     pending_.erase(pending_.begin(), pending_.begin() + long(n));
     nearest_pending_ = pending_.empty() ? std::numeric_limits<float>::infinity() : pending_.front().t;
     return n;
+  }
+
+  // How much of the sample fragment f's light can still reach: its opacity per footprint point
+  // (as compositing spreads its coverage over its mask) times the transmittance in front of that
+  // point, averaged over the footprint. Exact while f is being composited; an upper bound before
+  // (transmittance only falls). The contribution weight of the rays f's shading casts.
+  float visibility_weight(const Fragment& f) const {
+    if (f.preshaded) return 1.0f;
+    const float k = float(mask_count(f.mask)), c = std::clamp(f.coverage, 0.0f, 1.0f) * kPoints;
+    const float in_mask = k > 0 ? std::min(1.0f, c / k) : 0.0f;
+    const float out_mask = k < kPoints ? std::max(0.0f, (c - k * in_mask) / (kPoints - k)) : 0.0f;
+    float sum = 0;
+    for (int b = 0; b < kPoints; ++b) {
+      float o = (f.mask >> b) & 1 ? in_mask : out_mask;
+      if (o != 0.0f) sum += o * max_component(point_transmittance_[b]);
+    }
+    return sum * (1.0f / kPoints);
   }
 
   // The depth of the nearest pending fragment (infinity when none): compositing up to a depth

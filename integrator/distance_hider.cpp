@@ -1,7 +1,8 @@
 #include "integrator/distance_hider.h"
 
 #include "core/curve_basis.h"
-#include "shading/shading_point.h"
+#include "core/interaction.h"
+#include "core/ray_differentials.h"
 
 #include <limits>
 
@@ -34,11 +35,12 @@ RayFootprint camera_footprint(const Camera& cam, double x, double y, double spac
 }
 
 // Walks the footprint of `ray_in`, adds every fragment to scratch.abuffer and composites
-// them front to back with `shade`, stopping once the footprint is opaque. Fragments of strand
-// `skip_strand` are left out (a shadow ray's own strand). Returns the nearest fragment's depth.
+// them front to back with `shade`, stopping once the footprint is opaque. Hits `filter` skips
+// are left out (what a secondary ray starts on; for shadow rays, Transparent primitives).
+// Returns the nearest fragment's depth.
 template <class Shade>
 float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const RayFootprint& footprint,
-                        RayCounters& counters, RayScratch& scratch, Shade&& shade, uint32_t skip_strand) {
+                        RayCounters& counters, RayScratch& scratch, Shade&& shade, const HitFilter& filter) {
   const Scene& scene = ctx.base.scene;
   const CurveSet& cs = scene.curves;
   Ray ray = ray_in;
@@ -51,7 +53,9 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
       const Scene::PrimKind kind = scene.prim_kind(p, local);
       switch (kind) {
         case Scene::PrimKind::CurveSegment: {
-          if (cs.strand_id[local] == skip_strand) return;
+          if (cs.strand_id[local] == filter.skip_strand) return;
+          if (filter.shadow && scene.materials[cs.attribute_id[local]].transmission == Transmission::Transparent)
+            return;
           ++counters.segment_tests;
           CurveFragmentHit h;
           // Segments are cut at their strand's ends and at joints the strand runs straight
@@ -77,9 +81,14 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
           bool is_sphere = kind == Scene::PrimKind::Sphere;
           uint32_t mi = is_sphere ? scene.sphere_material[local] : scene.polygon_material[local];
           const Material& m = scene.materials[mi];
+          if (filter.shadow && m.transmission == Transmission::Transparent) return;
+          const float tmin = p == filter.origin_primitive ? filter.origin_min_t : 0.0f;
+          if (tmin == std::numeric_limits<float>::infinity()) return;
           // A visible hit of this surface by `r` (Sides 1 surfaces seen from behind are not).
-          auto hit_surface = [&](const Ray& r, SurfaceHit& h) {
+          auto hit_surface = [&](const Ray& r_in, SurfaceHit& h) {
             ++counters.surface_tests;
+            Ray r = r_in;
+            r.tmin = std::max(r.tmin, tmin);
             bool hit = is_sphere ? scene.spheres[local].intersect(r, h) : scene.polygons[local].intersect(r, h);
             return hit && !(m.sides == 1 && dot(m.flip_normals ? -h.ng : h.ng, r.d) > 0);
           };
@@ -90,7 +99,8 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
           abuffer.add(f, shade);
           nearest = std::min(nearest, sf.t);
           // Nothing behind an opaque surface that covers the whole footprint can be seen.
-          if (sf.coverage == 1.0f && m.opacity == Vec3f{1, 1, 1}) {
+          const Vec3f opacity = filter.shadow ? shadow_opacity(m, m.opacity) : m.opacity;
+          if (sf.coverage == 1.0f && opacity == Vec3f{1, 1, 1}) {
             ray.tmax = std::min(ray.tmax, sf.t);
             distance_ray.t_max = ray.tmax;
           }
@@ -142,69 +152,94 @@ DistanceContext make_distance_context(const HiderContext& base, const DistanceHi
   return ctx;
 }
 
-SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& camera_ray, const RayFootprint& footprint,
-                               RayCounters& counters, RayScratch& scratch) {
-  const Scene& scene = ctx.base.scene;
-  const CurveSet& cs = scene.curves;
-  auto shade = [&](const Fragment& f) -> ShadedFragment {
-    uint32_t local;
-    Scene::PrimKind kind = scene.prim_kind(f.primitive, local);
-    ShadingPoint sp;
-    sp.P = camera_ray.at(f.t);
-    sp.I = camera_ray.d;
-    uint32_t material;
-    if (kind == Scene::PrimKind::CurveSegment) {
-      material = cs.attribute_id[local];
-      sp.N = -camera_ray.d;
-      if (cs.oriented(local)) {
-        sp.N = normalize(lerp(f.u, cs.end_normal(local, 0), cs.end_normal(local, 1)));
-        if (scene.materials[material].flip_normals) sp.N = -sp.N;
-      }
-      sp.Cs = bezier(cs.colors(local), f.u);
-      sp.Os = bezier(cs.opacities(local), f.u);
-      const Vec3f* cp = cs.control_points(local);
-      sp.dPdv = normalize(bezier_derivative(cp, f.u));
-      if (length_squared(sp.dPdv) == 0.0f) sp.dPdv = normalize(cp[3] - cp[0]);
-    } else {
-      SurfaceHit h;
-      Ray r = f.surface_point < 0 ? camera_ray : footprint_sub_ray(camera_ray, footprint, f.surface_point);
-      r.tmin = f.t * (1 - 1e-4f);
-      r.tmax = f.t * (1 + 1e-4f) + 1e-6f;
-      bool is_sphere = kind == Scene::PrimKind::Sphere;
-      if (!(is_sphere ? scene.spheres[local].intersect(r, h) : scene.polygons[local].intersect(r, h))) h.ng = -r.d;
-      material = is_sphere ? scene.sphere_material[local] : scene.polygon_material[local];
-      const Material& m = scene.materials[material];
-      sp.N = m.flip_normals ? -h.ng : h.ng;
-      sp.Cs = m.color;
-      sp.Os = m.opacity;
+namespace {
+
+// Secondary rays of the distance hider: footprint rays through the same walk and A-buffer.
+class FootprintSecondaryRays : public SecondaryRayTracer {
+ public:
+  FootprintSecondaryRays(const DistanceContext& ctx, RayCounters& counters, RayScratchStack& scratch)
+      : ctx_(ctx), counters_(counters), scratch_(scratch) {}
+
+  Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance, const RayFootprint*,
+                             const PathState& path) override {
+    const SecondaryRaySettings& s = ctx_.base.secondary;
+    Ray ray{at.P, l, s.ray_offset, distance};
+    HitFilter filter;
+    filter.shadow = true;
+    filter.skip_strand = at.strand;
+    // Spheres and polygons are convex or flat toward a light their point faces: never hit again.
+    if (!at.is_curve) {
+      filter.origin_primitive = at.primitive;
+      filter.origin_min_t = std::numeric_limits<float>::infinity();
     }
-    ShadeResult r = ctx.base.shading.surface(material).shade(sp, ctx.base.shading.lights(material));
+    return trace_footprint_transmittance(ctx_, ray, shadow_footprint(at, l, ctx_.min_radius), counters_,
+                                         scratch_.at(size_t(path.depth) + 1), filter);
+  }
+
+  Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint* footprint, const PathState& next) override {
+    RayFootprint fp = footprint ? *footprint : RayFootprint{};
+    fp.min_radius = ctx_.min_radius;
+    const float self = std::max(ctx_.base.secondary.self_offset, 4 * fp.reach(0));
+    return trace_distance_ray(ctx_, ray, fp, counters_, scratch_, next, leaving_filter(at, ctx_.base.scene, self)).color;
+  }
+
+ private:
+  const DistanceContext& ctx_;
+  RayCounters& counters_;
+  RayScratchStack& scratch_;
+};
+
+}  // namespace
+
+SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
+                               RayCounters& counters, RayScratchStack& scratch, const PathState& path,
+                               const HitFilter& filter) {
+  const Scene& scene = ctx.base.scene;
+  RayScratch& level = scratch.at(size_t(path.depth));
+  FootprintSecondaryRays secondary(ctx, counters, scratch);
+  auto shade = [&](const Fragment& f) -> ShadedFragment {
+    // Surfaces are shaded where the sub-ray that found them hit; the footprint stays the ray's.
+    const Ray shading_ray = f.surface_point < 0 ? ray : footprint_sub_ray(ray, footprint, f.surface_point);
+    const Interaction at = make_interaction(scene, f.primitive, shading_ray, f.t, f.u, &footprint);
+    const PathState here{path.depth, path.weight * level.abuffer.visibility_weight(f)};
+    ShadedPoint r = shade_with_secondary_rays(ctx.base.shading, ctx.base.secondary, at, normalize(shading_ray.d),
+                                              &footprint, here, secondary, counters);
     return {r.Ci, r.Oi};
   };
 
   SampleValue out;
-  out.depth = collect_fragments(ctx, camera_ray, footprint, counters, scratch, shade, kNoStrand);
-  const ABuffer& abuffer = scratch.abuffer;
-  out.color = abuffer.color();
-  Vec3f tr = abuffer.transmittance();
+  out.depth = collect_fragments(ctx, ray, footprint, counters, level, shade, filter);
+  out.color = level.abuffer.color();
+  Vec3f tr = level.abuffer.transmittance();
   out.alpha = 1.0f - (tr.x + tr.y + tr.z) / 3.0f;
   return out;
 }
 
 Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
-                                    RayCounters& counters, RayScratch& scratch, uint32_t skip_strand) {
+                                    RayCounters& counters, RayScratch& scratch, const HitFilter& filter) {
   const Scene& scene = ctx.base.scene;
   const CurveSet& cs = scene.curves;
-  // Only opacity matters here: Os from the primitive (curve primvars, else the material).
+  HitFilter shadow = filter;
+  shadow.shadow = true;
+  // Only opacity matters here: Os from the primitive (curve primvars, else the material), as
+  // its Transmission attribute says.
   auto opacity = [&](const Fragment& f) -> ShadedFragment {
     uint32_t local;
     Scene::PrimKind kind = scene.prim_kind(f.primitive, local);
-    if (kind == Scene::PrimKind::CurveSegment) return {Vec3f{}, bezier(cs.opacities(local), f.u)};
+    if (kind == Scene::PrimKind::CurveSegment)
+      return {Vec3f{}, shadow_opacity(scene.materials[cs.attribute_id[local]], bezier(cs.opacities(local), f.u))};
     uint32_t material = kind == Scene::PrimKind::Sphere ? scene.sphere_material[local] : scene.polygon_material[local];
-    return {Vec3f{}, scene.materials[material].opacity};
+    return {Vec3f{}, shadow_opacity(scene.materials[material], scene.materials[material].opacity)};
   };
-  collect_fragments(ctx, ray, footprint, counters, scratch, opacity, skip_strand);
+  collect_fragments(ctx, ray, footprint, counters, scratch, opacity, shadow);
   return scratch.abuffer.transmittance();
+}
+
+Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
+                                    RayCounters& counters, RayScratch& scratch, uint32_t skip_strand) {
+  HitFilter filter;
+  filter.skip_strand = skip_strand;
+  return trace_footprint_transmittance(ctx, ray, footprint, counters, scratch, filter);
 }
 
 void render_tile_distance(const DistanceContext& ctx, const PixelRect& rect, TileAccumulator& acc,
@@ -222,7 +257,7 @@ void render_tile_distance(const DistanceContext& ctx, const PixelRect& rect, Til
           Ray ray = cam.generate_ray(x, y);
           RayFootprint fp = camera_footprint(cam, x, y, spacing, ray, ctx.min_radius);
           ++counters.primary_rays;
-          SampleValue v = trace_distance_ray(ctx, ray, fp, counters, scratch.at(0));
+          SampleValue v = trace_distance_ray(ctx, ray, fp, counters, scratch);
           acc.add_sample(float(x), float(y), {v.color.x, v.color.y, v.color.z, v.alpha}, v.depth);
         }
 }

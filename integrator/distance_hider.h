@@ -9,7 +9,9 @@
 #include "core/coverage.h"
 #include "core/curve_distance_intersector.h"
 #include "integrator/abuffer.h"
+#include "integrator/hit_filter.h"
 #include "integrator/ray_scratch.h"
+#include "integrator/secondary_rays.h"
 #include "core/coverage_mask.h"
 #include "core/surface_hit.h"
 #include "integrator/stochastic_hider.h"
@@ -99,16 +101,23 @@ bool surface_coverage(const Ray& ray, const RayFootprint& footprint, HitSurface&
   return true;
 }
 
-// The colour, alpha and depth seen by one camera ray with footprint `footprint`.
-// `scratch` is this ray's level of the tile's RayScratchStack.
+// The colour, alpha and depth seen by one ray with footprint `footprint`: a camera ray, or a
+// reflected or refracted one (`path` says where it is on its path, `filter` what it leaves).
+// Its shading casts shadow, reflected and refracted rays through the same footprint walk and
+// A-buffer, with the next levels of `scratch`.
 SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
-                               RayCounters& counters, RayScratch& scratch);
+                               RayCounters& counters, RayScratchStack& scratch, const PathState& path = {},
+                               const HitFilter& filter = {});
 
 // The transmittance of the footprint along `ray` (mean over its 8x8 points): every strand and
 // surface it passes, front to back, as coverage x opacity, through the same walk and A-buffer as
 // camera rays (so thin strands attenuate smoothly); stops once below kDistanceMinTransmittance.
-// Strand `skip_strand` is left out (the strand a shadow ray starts on; kNoStrand: none).
-// Opacity is the primitive's Os: shaders that change Oi are not consulted.
+// Hits `filter` skips are left out (the strand or surface a shadow ray starts on); each primitive
+// blocks by its Transmission attribute (shadow_opacity). Opacity is the primitive's Os: shaders
+// that change Oi are not consulted.
+Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
+                                    RayCounters& counters, RayScratch& scratch, const HitFilter& filter);
+// The same, leaving out strand `skip_strand` only (kNoStrand: none).
 Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
                                     RayCounters& counters, RayScratch& scratch, uint32_t skip_strand);
 

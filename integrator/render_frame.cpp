@@ -41,8 +41,13 @@ Image render_frame(const Scene& scene, const RenderOptions& options, Diagnostics
 
   SceneShading shading(scene, diag);
   Tracer tracer(scene);
-  HiderContext ctx{scene, shading, tracer, options.seed, std::max(1, int(std::lround(out.pixel_samples[0]))),
-                   std::max(1, int(std::lround(out.pixel_samples[1])))};
+  HiderContext ctx{scene,
+                   shading,
+                   tracer,
+                   options.seed,
+                   std::max(1, int(std::lround(out.pixel_samples[0]))),
+                   std::max(1, int(std::lround(out.pixel_samples[1]))),
+                   make_secondary_settings(scene, options.contribution_threshold)};
 
   std::optional<DistanceContext> distance;
   if (options.hider == HiderKind::Distance) distance.emplace(make_distance_context(ctx, options.distance));

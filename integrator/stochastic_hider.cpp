@@ -16,27 +16,98 @@ constexpr float kMinTransmittance = 1e-3f;
 constexpr int kMaxLayers = 256;
 // Relative offset that moves a continued ray past the surface it just hit.
 constexpr float kContinueEpsilon = 1e-5f;
+// Secondary rays start this fraction of the scene's size away from their point.
+constexpr float kRayOffsetSceneFraction = 1e-6f;
+// A sphere a ray leaves is not hit again nearer than this fraction of the scene's size.
+constexpr float kSelfOffsetSceneFraction = 1e-4f;
+
+// Exact secondary rays: shadow rays collect the opacity of every hit between the point and the
+// light; reflected and refracted rays are camera rays from the point.
+class ExactSecondaryRays : public SecondaryRayTracer {
+ public:
+  ExactSecondaryRays(const HiderContext& ctx, RayCounters& counters, RayScratchStack& scratch)
+      : ctx_(ctx), counters_(counters), scratch_(scratch) {}
+
+  Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance, const RayFootprint*,
+                             const PathState& path) override {
+    Ray ray{at.P, l, ctx_.secondary.ray_offset, distance};
+    HitFilter filter = shadow_filter(at);
+    Vec3f tr{1, 1, 1};
+    TraversalScratch& traversal = scratch_.at(size_t(path.depth) + 1).traversal;
+    for (int layer = 0; layer < kMaxLayers; ++layer) {
+      Interaction hit;
+      if (!ctx_.tracer.nearest_hit(ray, hit, counters_, traversal, filter)) break;
+      tr = mul(tr, Vec3f{1, 1, 1} - shadow_opacity(ctx_.scene.materials[hit.material], hit.Os));
+      if (max_component(tr) < kMinTransmittance) return {};
+      ray.tmin = hit.t + kContinueEpsilon * std::max(1.0f, hit.t);
+    }
+    return tr;
+  }
+
+  Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint*, const PathState& next) override {
+    return trace_camera_ray(ctx_, ray, counters_, scratch_, next, leaving_filter(at, ctx_.scene, ctx_.secondary.self_offset)).color;
+  }
+
+ private:
+  // A shadow ray never hits the strand or surface it leaves: spheres and polygons are convex or
+  // flat toward a light their point faces, and strands are excluded by id.
+  static HitFilter shadow_filter(const Interaction& at) {
+    HitFilter f;
+    f.shadow = true;
+    f.skip_strand = at.strand;
+    if (!at.is_curve) {
+      f.origin_primitive = at.primitive;
+      f.origin_min_t = std::numeric_limits<float>::infinity();
+    }
+    return f;
+  }
+
+  const HiderContext& ctx_;
+  RayCounters& counters_;
+  RayScratchStack& scratch_;
+};
 
 }  // namespace
 
+SecondaryRaySettings make_secondary_settings(const Scene& scene, float contribution_threshold) {
+  SecondaryRaySettings s;
+  s.contribution_threshold = contribution_threshold;
+  s.max_depth = std::max(0, scene.output.trace_max_depth);
+  Vec3f extent = scene.bounds.empty() ? Vec3f{1, 1, 1} : scene.bounds.extent();
+  s.ray_offset = kRayOffsetSceneFraction * std::max(max_component(extent), 1e-6f);
+  s.self_offset = kSelfOffsetSceneFraction * std::max(max_component(extent), 1e-6f);
+  return s;
+}
+
+HitFilter leaving_filter(const Interaction& at, const Scene& scene, float self_distance) {
+  HitFilter f;
+  f.skip_strand = at.strand;
+  if (!at.is_curve) {
+    uint32_t local;
+    f.origin_primitive = at.primitive;
+    f.origin_min_t = scene.prim_kind(at.primitive, local) == Scene::PrimKind::Polygon
+                         ? std::numeric_limits<float>::infinity()
+                         : self_distance;
+  }
+  return f;
+}
+
 SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, RayCounters& counters,
-                             RayScratchStack& scratch) {
+                             RayScratchStack& scratch, const PathState& path, const HitFilter& filter) {
   SampleValue out;
   out.depth = std::numeric_limits<float>::infinity();
   Vec3f transmittance{1, 1, 1};
   Ray ray = camera_ray;
+  ExactSecondaryRays secondary(ctx, counters, scratch);
+  TraversalScratch& traversal = scratch.at(size_t(path.depth)).traversal;
+  // The filter holds for every layer (a continued ray is still the ray that left the point).
+  const HitFilter& layer_filter = filter;
   for (int layer = 0; layer < kMaxLayers; ++layer) {
-    SurfaceInteraction hit;
-    if (!ctx.tracer.nearest_hit(ray, hit, counters, scratch.at(0).traversal)) break;
+    Interaction hit;
+    if (!ctx.tracer.nearest_hit(ray, hit, counters, traversal, layer_filter)) break;
     if (layer == 0) out.depth = hit.t;
-    ShadingPoint sp;
-    sp.P = hit.P;
-    sp.N = hit.N;
-    sp.I = ray.d;
-    sp.Cs = hit.Cs;
-    sp.Os = hit.Os;
-    sp.dPdv = hit.tangent;
-    ShadeResult r = ctx.shading.surface(hit.material).shade(sp, ctx.shading.lights(hit.material));
+    PathState here{path.depth, path.weight * max_component(transmittance)};
+    ShadedPoint r = shade_with_secondary_rays(ctx.shading, ctx.secondary, hit, ray.d, nullptr, here, secondary, counters);
     out.color += mul(transmittance, r.Ci);
     transmittance = mul(transmittance, Vec3f{1, 1, 1} - r.Oi);
     if (max_component(transmittance) < kMinTransmittance) {

@@ -1,12 +1,15 @@
 // The classic hider: N x N stratified jittered samples per pixel, each traced with exact
 // hit/miss tests; semi-transparent hits are composited front to back by continuing the ray.
-// This is the baseline the distance-aware hider is measured against.
+// Shadow, reflection and refraction rays are exact rays too. This is the baseline the
+// distance-aware hider is measured against.
 #pragma once
 
 #include "core/scene.h"
 #include "integrator/film.h"
+#include "integrator/hit_filter.h"
 #include "integrator/ray_scratch.h"
 #include "integrator/render_stats.h"
+#include "integrator/secondary_rays.h"
 #include "integrator/tracer.h"
 #include "shading/scene_shading.h"
 
@@ -18,7 +21,12 @@ struct HiderContext {
   const Tracer& tracer;
   uint32_t seed;
   int samples_x, samples_y;
+  SecondaryRaySettings secondary{};
 };
+
+// The secondary-ray settings of a frame: the threshold, Option "trace" "maxdepth", and an
+// offset for ray origins relative to the scene's size.
+SecondaryRaySettings make_secondary_settings(const Scene& scene, float contribution_threshold);
 
 // Renders every sample whose filter footprint reaches `tile`'s accumulator.
 void render_tile_stochastic(const HiderContext& ctx, const PixelRect& sample_rect, TileAccumulator& acc,
@@ -30,6 +38,13 @@ struct SampleValue {
   float alpha = 0;
   float depth = 0;  // nearest hit distance (infinity when nothing was hit)
 };
-SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& ray, RayCounters& counters, RayScratchStack& scratch);
+// `path`: the ray's place on its path (camera rays: the default); `filter`: what it must not hit
+// (the surface or strand a secondary ray leaves).
+SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& ray, RayCounters& counters, RayScratchStack& scratch,
+                             const PathState& path = {}, const HitFilter& filter = {});
+
+// The filter for a reflected or refracted ray leaving `at`: its strand is never hit; a planar
+// polygon cannot be hit again; a sphere only beyond `self_distance` (its far side).
+HitFilter leaving_filter(const Interaction& at, const Scene& scene, float self_distance);
 
 }  // namespace darc

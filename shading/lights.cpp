@@ -103,6 +103,9 @@ std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& de
     Vec3f from_w = Vec3f(d.shader_to_world.transform_point(from));
     Vec3f to_w = Vec3f(d.shader_to_world.transform_point(to));
     std::string kind = d.shader;
+    if (kind == "shadowspot") kind = "spotlight";
+    if (kind == "shadowpoint") kind = "pointlight";
+    if (kind == "shadowdistant") kind = "distantlight";
     if (kind != "ambientlight" && kind != "distantlight" && kind != "pointlight" && kind != "spotlight") {
       std::string fallback = (p.find("to") && p.find("coneangle")) ? "spotlight"
                              : p.find("from")                     ? "pointlight"
@@ -123,6 +126,7 @@ std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& de
       float beam = p.get_float("beamdistribution", 2.0f);
       lights.push_back(std::make_unique<SpotLight>(c, from_w, to_w - from_w, cone, delta, beam));
     }
+    lights.back()->set_casts_shadows(d.casts_shadows && kind != "ambientlight");
   }
   return lights;
 }

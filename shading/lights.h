@@ -23,9 +23,17 @@ class Light {
   virtual ~Light() = default;
   // Returns false when the light sends nothing to P.
   virtual bool illuminate(const Vec3f& P, LightContribution& out) const = 0;
+  // Whether occluders between P and the light are looked for (LightDesc::casts_shadows).
+  bool casts_shadows() const { return casts_shadows_; }
+  void set_casts_shadows(bool on) { casts_shadows_ = on; }
+
+ private:
+  bool casts_shadows_ = false;
 };
 
-// Builds the lights of a scene, in Scene::lights order. Unknown light shaders get one
+// Builds the lights of a scene, in Scene::lights order. PRMan's shadowspot, shadowpoint and
+// shadowdistant are spotlight, pointlight and distantlight whose shadows come from their
+// "shadowname" (ray-traced: LightDesc::casts_shadows). Unknown light shaders get one
 // warning each and fall back: to a spotlight when they have "to" and "coneangle", to a point
 // light when they have "from", else to a distant light along +z (documented in README).
 std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& descs, Diagnostics& diag);

@@ -1,5 +1,9 @@
-// Surface shaders by RIB name: the RI standard surfaces (RI Spec 3.2 Appendix A) with their
-// default parameters, evaluated with the lights that illuminate the primitive.
+// Surface shaders by RIB name: the RI standard surfaces (RI Spec 3.2 Appendix A) and the ray
+// tracing ones of BMRT (mirror, glass), with their default parameters. A shader does not loop
+// over lights or trace rays: it describes its lobes (what it emits, its ambient factor, its
+// response to one light, the weights of a reflected and a refracted ray) and its opacity, and
+// the integrator owns the light loop, visibility and pruning (DESIGN.md, "shading split into
+// lobes"). Nothing here calls the tracer.
 #pragma once
 
 #include "parser/diagnostics.h"
@@ -13,28 +17,56 @@
 
 namespace darc {
 
-struct ShadeResult {
-  Vec3f Ci;  // premultiplied by Oi, as RI shaders output
+// What a shader returns at one point. The colour it computes is
+//   Ci = Oi * (emission + ambient * (sum of ambient lights) + sum over lights of response(light)
+//              + reflection * (colour seen along R) + transmission * (colour seen along T)),
+// the form of every RI shader here (Ci = Os * (...)).
+struct SurfaceLobes {
   Vec3f Oi;
+  Vec3f emission;      // light-independent colour
+  Vec3f ambient;       // factor on the ambient lights' sum
+  Vec3f reflection;    // weight of the mirror-reflected ray (Kr * Fresnel, tinted); zero: none
+  Vec3f transmission;  // weight of the refracted ray (Kt * (1 - Fresnel), tinted); zero: none
+  float eta = 1;       // n_from / n_to across the surface for the refracted ray
+  Vec3f Nf;            // unit normal facing the incoming ray, that R and T are taken about
+  bool lit = false;    // response() is not zero for every light: the light loop is needed
+};
+
+class SurfaceShader {
+ public:
+  virtual ~SurfaceShader() = default;
+  virtual SurfaceLobes lobes(const ShadingPoint& sp) const = 0;
+  // The light sent toward the eye for one non-ambient light's contribution `lc` (its Cl already
+  // attenuated by the light itself, not yet by occluders), before Oi. `lobes` is lobes(sp).
+  virtual Vec3f response(const ShadingPoint&, const SurfaceLobes&, const LightContribution&) const { return {}; }
 };
 
 // The lights a primitive sees (pointers into the scene's light list).
 using LightList = std::vector<const Light*>;
 
-class SurfaceShader {
- public:
-  virtual ~SurfaceShader() = default;
-  virtual ShadeResult shade(const ShadingPoint& sp, const LightList& lights) const = 0;
+// The colour and opacity of a shader lit by `lights` without shadows or traced rays (reflection
+// and refraction see black): what the shader computes when nothing is traced. For tests and for
+// callers that need no integrator.
+struct ShadeResult {
+  Vec3f Ci;  // premultiplied by Oi
+  Vec3f Oi;
 };
+ShadeResult shade_unshadowed(const SurfaceShader& shader, const ShadingPoint& sp, const LightList& lights);
 
 // Makes the shader for a RIB Surface call. Unknown names get one warning each and
-// "defaultsurface" (documented in README). Known names: constant, matte, plastic, metal,
-// shinymetal (= metal: no environment maps), paintedplastic (= plastic: no textures),
-// hair (Kajiya-Kay, PRMan application note 19 parameters), defaultsurface.
+// "defaultsurface" (documented in README). Known names: constant, matte, plastic,
+// paintedplastic (= plastic: no textures), metal, shinymetal (Kr traces a reflection ray where
+// RSL reads an environment map), mirror, glass, hair (Kajiya-Kay, PRMan application note 19),
+// defaultsurface.
 std::unique_ptr<SurfaceShader> make_surface_shader(const std::string& name, const ParamList& params,
                                                    const SourceLoc& loc, Diagnostics& diag);
 
 // An emissive surface for geometry inside an AreaLightSource block: Ci = intensity * lightcolor.
 std::unique_ptr<SurfaceShader> make_area_light_surface(const ParamList& light_params);
+
+// The dielectric Fresnel reflectance for unpolarized light (RSL fresnel()'s Kr) of a ray with
+// cos_i = -dot(I, Nf) > 0 crossing into a medium with relative index 1 / eta (eta = n_from /
+// n_to). 1 on total internal reflection.
+float dielectric_fresnel(float cos_i, float eta);
 
 }  // namespace darc

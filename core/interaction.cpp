@@ -1,0 +1,82 @@
+#include "core/interaction.h"
+
+#include "core/curve_basis.h"
+
+namespace darc {
+
+namespace {
+
+template <typename T>
+T bezier(const T* c, float u) {
+  float s = 1 - u;
+  return c[0] * (s * s * s) + c[1] * (3 * s * s * u) + c[2] * (3 * s * u * u) + c[3] * (u * u * u);
+}
+
+// The offset of a neighbouring ray's hit on the plane through P with normal n (Igehy's transfer):
+// the neighbour at parameter t is at P + axis, then slides along d onto the plane.
+Vec3f transfer(const Vec3f& axis, const Vec3f& d, const Vec3f& n) {
+  float dn = dot(d, n);
+  // Grazing: the plane would stretch the footprint without bound; keep it perpendicular to the ray.
+  if (std::abs(dn) < 1e-4f * length(d)) return axis - d * (dot(axis, d) / dot(d, d));
+  return axis - d * (dot(axis, n) / dn);
+}
+
+}  // namespace
+
+Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& ray, float t, float u,
+                             const RayFootprint* footprint) {
+  Interaction it;
+  it.primitive = primitive;
+  it.t = t;
+  it.u = u;
+  it.P = ray.at(t);
+  uint32_t local;
+  const Scene::PrimKind kind = scene.prim_kind(primitive, local);
+  Vec3f plane_normal;  // the plane the footprint is transferred to
+  if (kind == Scene::PrimKind::CurveSegment) {
+    const CurveSet& cs = scene.curves;
+    it.is_curve = true;
+    it.strand = cs.strand_id[local];
+    it.material = cs.attribute_id[local];
+    it.N = -ray.d;
+    if (cs.oriented(local)) {
+      it.N = normalize(lerp(u, cs.end_normal(local, 0), cs.end_normal(local, 1)));
+      if (scene.materials[it.material].flip_normals) it.N = -it.N;
+    }
+    it.Cs = bezier(cs.colors(local), u);
+    it.Os = bezier(cs.opacities(local), u);
+    const Vec3f* cp = cs.control_points(local);
+    it.dPdv = normalize(bezier_derivative(cp, u));
+    if (length_squared(it.dPdv) == 0.0f) it.dPdv = normalize(cp[3] - cp[0]);
+    plane_normal = -ray.d;
+  } else {
+    const bool is_sphere = kind == Scene::PrimKind::Sphere;
+    it.material = is_sphere ? scene.sphere_material[local] : scene.polygon_material[local];
+    const Material& m = scene.materials[it.material];
+    Vec3f ng = is_sphere ? scene.spheres[local].normal_at(it.P) : scene.polygons[local].normal;
+    it.N = m.flip_normals ? -ng : ng;
+    it.Cs = m.color;
+    it.Os = m.opacity;
+    plane_normal = ng;
+    if (footprint) {
+      it.dPdx = transfer(footprint->axis_x(t), ray.d, plane_normal);
+      it.dPdy = transfer(footprint->axis_y(t), ray.d, plane_normal);
+      if (is_sphere) {
+        // The normal's change across the footprint, as the difference of the normals at its
+        // edges (exact for the sphere's first-order change, bounded for large footprints).
+        const Sphere& s = scene.spheres[local];
+        Vec3f sign = m.flip_normals ? Vec3f{-1, -1, -1} : Vec3f{1, 1, 1};
+        it.dNdx = mul(sign, s.normal_at(it.P + it.dPdx) - ng);
+        it.dNdy = mul(sign, s.normal_at(it.P + it.dPdy) - ng);
+      }
+    }
+    return it;
+  }
+  if (footprint) {
+    it.dPdx = transfer(footprint->axis_x(t), ray.d, plane_normal);
+    it.dPdy = transfer(footprint->axis_y(t), ray.d, plane_normal);
+  }
+  return it;
+}
+
+}  // namespace darc

@@ -1,0 +1,87 @@
+#include "integrator/secondary_rays.h"
+
+#include "core/ray_differentials.h"
+
+namespace darc {
+
+namespace {
+
+bool worth_tracing(float weight, const SecondaryRaySettings& s) {
+  return s.contribution_threshold <= 0 || weight >= s.contribution_threshold;
+}
+
+}  // namespace
+
+ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const SecondaryRaySettings& settings,
+                                      const Interaction& at, const Vec3f& incoming, const RayFootprint* footprint,
+                                      const PathState& path, SecondaryRayTracer& tracer, RayCounters& counters) {
+  ShadingPoint sp;
+  sp.P = at.P;
+  sp.N = at.N;
+  sp.I = incoming;
+  sp.Cs = at.Cs;
+  sp.Os = at.Os;
+  sp.dPdv = at.dPdv;
+  const SurfaceShader& shader = shading.surface(at.material);
+  const SurfaceLobes lobes = shader.lobes(sp);
+  // What this point's light can still change in its sample, before the shader's factors.
+  const float point_weight = path.weight;
+  Vec3f c = lobes.emission;
+  LightContribution lc;
+  for (const Light* light : shading.lights(at.material)) {
+    if (!light->illuminate(sp.P, lc)) continue;
+    if (lc.ambient) {
+      c += mul(lobes.ambient, lc.Cl);
+      continue;
+    }
+    if (!lobes.lit) continue;
+    Vec3f unoccluded = shader.response(sp, lobes, lc);
+    if (!light->casts_shadows() || max_component(unoccluded) <= 0) {
+      c += unoccluded;
+      continue;
+    }
+    if (!worth_tracing(point_weight * max_component(mul(lobes.Oi, unoccluded)), settings)) {
+      counters.count_pruned(SecondaryKind::Shadow);
+      c += unoccluded;  // pruned: the light taken as unoccluded
+      continue;
+    }
+    counters.count_traced(SecondaryKind::Shadow);
+    c += mul(unoccluded, tracer.shadow_transmittance(at, lc.L, lc.distance, footprint, path));
+  }
+
+  const bool may_bounce = path.depth < settings.max_depth;
+  auto bounce = [&](const Vec3f& factor, SecondaryKind kind, const Vec3f& dir, const RayFootprint* fp) {
+    const float weight = point_weight * max_component(mul(lobes.Oi, factor));
+    if (!worth_tracing(weight, settings)) {
+      counters.count_pruned(kind);  // pruned: black, what a ray leaving the scene sees
+      return;
+    }
+    counters.count_traced(kind);
+    Ray r{at.P, dir, settings.ray_offset};
+    c += mul(factor, tracer.radiance(at, r, fp, PathState{path.depth + 1, weight}));
+  };
+  if (may_bounce && max_component(lobes.reflection) > 0) {
+    const Vec3f r = reflect(incoming, lobes.Nf);
+    if (footprint) {
+      const float flip = dot(lobes.Nf, at.N) < 0 ? -1.0f : 1.0f;
+      RayFootprint fp = reflected_footprint(at, incoming, lobes.Nf, at.dNdx * flip, at.dNdy * flip, *footprint);
+      bounce(lobes.reflection, SecondaryKind::Reflection, r, &fp);
+    } else {
+      bounce(lobes.reflection, SecondaryKind::Reflection, r, nullptr);
+    }
+  }
+  Vec3f t;
+  if (may_bounce && max_component(lobes.transmission) > 0 && refract(incoming, lobes.Nf, lobes.eta, t)) {
+    if (footprint) {
+      const float flip = dot(lobes.Nf, at.N) < 0 ? -1.0f : 1.0f;
+      RayFootprint fp =
+          refracted_footprint(at, incoming, lobes.Nf, at.dNdx * flip, at.dNdy * flip, lobes.eta, t, *footprint);
+      bounce(lobes.transmission, SecondaryKind::Refraction, t, &fp);
+    } else {
+      bounce(lobes.transmission, SecondaryKind::Refraction, t, nullptr);
+    }
+  }
+  return {mul(lobes.Oi, c), lobes.Oi};
+}
+
+}  // namespace darc

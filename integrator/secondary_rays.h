@@ -1,0 +1,56 @@
+// The one shading path both hiders share: a shader's lobes at an interaction, the light loop
+// with shadow rays, the reflected and refracted rays with their footprints, and the pruning of
+// every secondary ray by its contribution weight (integrator/contribution.h). What differs per
+// hider is how a ray is traced: SecondaryRayTracer.
+#pragma once
+
+#include "core/interaction.h"
+#include "core/ray_footprint.h"
+#include "integrator/render_stats.h"
+#include "shading/scene_shading.h"
+
+namespace darc {
+
+// Where a ray is on its path from the camera.
+struct PathState {
+  int depth = 0;       // reflection and refraction bounces before this ray (camera rays: 0)
+  float weight = 1;    // how much this ray's result can change its sample (1 for camera rays)
+};
+
+class SecondaryRayTracer {
+ public:
+  virtual ~SecondaryRayTracer() = default;
+  // The transmittance from `at` toward a light in unit direction l, up to `distance` (infinity
+  // for distant lights). `footprint`: the incoming ray's, or null for exact rays.
+  virtual Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance,
+                                     const RayFootprint* footprint, const PathState& path) = 0;
+  // The colour seen along a reflected or refracted ray from `at` (with its footprint, or null for
+  // exact rays); `next` is that ray's path state.
+  virtual Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint* footprint,
+                         const PathState& next) = 0;
+};
+
+struct SecondaryRaySettings {
+  float contribution_threshold = 0;
+  int max_depth = 0;
+  float ray_offset = 0;  // secondary rays start this far from their point (scene-scale relative)
+  // A curved surface a reflected or refracted ray leaves is hit again only beyond this (its far
+  // side; the near root is the start point itself, moved by rounding).
+  float self_offset = 0;
+};
+
+struct ShadedPoint {
+  Vec3f Ci;  // premultiplied by Oi
+  Vec3f Oi;
+};
+
+// Shades `at`, seen along `incoming` (unit direction) with footprint `footprint` (null: exact
+// ray), lit by its lights with shadows, and with its reflected and refracted rays traced by
+// `tracer`, each secondary ray pruned when path.weight x its own factor is below the threshold:
+// a pruned shadow ray counts the light as unoccluded, a pruned reflected or refracted ray as
+// black (what a ray that leaves the scene sees).
+ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const SecondaryRaySettings& settings,
+                                      const Interaction& at, const Vec3f& incoming, const RayFootprint* footprint,
+                                      const PathState& path, SecondaryRayTracer& tracer, RayCounters& counters);
+
+}  // namespace darc
