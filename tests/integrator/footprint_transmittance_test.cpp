@@ -33,16 +33,17 @@ std::string strand(float y, float z, float width, float opacity) {
 }
 
 // The transmittance seen along +z from (0, 0, -1) with a 1 x 1 footprint (orthographic).
-Vec3f transmittance(const Scene& scene, uint32_t skip_strand = kNoStrand) {
+Vec3f transmittance(const Scene& scene, uint32_t skip_strand = kNoStrand, DistanceHiderSettings settings = {},
+                    Vec3f origin = {0, 0, -1}) {
   Diagnostics diag([](const Diagnostic&) {});
   SceneShading shading(scene, diag);
   Tracer tracer(scene);
   HiderContext base{scene, shading, tracer, 0, 1, 1};
-  DistanceContext ctx = make_distance_context(base, DistanceHiderSettings{});
+  DistanceContext ctx = make_distance_context(base, settings);
   RayFootprint fp;
   fp.dox = Vec3f{1, 0, 0};
   fp.doy = Vec3f{0, 1, 0};
-  Ray ray{{0, 0, -1}, {0, 0, 1}};
+  Ray ray{origin, {0, 0, 1}};
   RayCounters counters;
   RayScratchStack scratch(scene.accel);
   return trace_footprint_transmittance(ctx, ray, fp, counters, scratch.at(0), skip_strand);
@@ -69,6 +70,22 @@ TEST(FootprintTransmittance, StrandsSideBySideAddUp) {
   for (int i = 0; i < 4; ++i) world += strand(-0.375f + 0.25f * float(i), 2.0f + float(i), c, o);
   Vec3f t = transmittance(build_scene(world));
   EXPECT_NEAR(t.x, 1.0f - 4.0f * c * o, 0.02f);  // the mask points place each band to 1/8
+}
+
+// k parallel strands of coverage c and opacity o, separated in depth, at positions across the
+// footprint that nothing correlates: the seed's scalar composite gives (1 - c o)^k (each strand
+// takes c o of what is left). The masks instead see where each strand lies: stacked strands and
+// strands side by side are the two tests above.
+TEST(FootprintTransmittance, SeparatedUncorrelatedStrandsTransmitTheProductOfTheirClearances) {
+  const float c = 0.125f, o = 0.5f;
+  DistanceHiderSettings scalar;
+  scalar.coverage_masks = false;
+  for (int k = 1; k <= 5; ++k) {
+    std::string world;
+    for (int i = 0; i < k; ++i) world += strand(-0.3f + 0.15f * float(i), 2.0f + float(i), c, o);
+    Vec3f t = transmittance(build_scene(world), kNoStrand, scalar);
+    EXPECT_NEAR(t.x, std::pow(1.0f - c * o, float(k)), kTolerance) << k << " strands";
+  }
 }
 
 TEST(FootprintTransmittance, TheSkippedStrandCastsNothing) {

@@ -138,3 +138,42 @@ TEST(Shaders, UnknownNamesWarnOnceAndFallBack) {
 
 }  // namespace
 }  // namespace darc
+
+namespace darc {
+namespace {
+
+TEST(Shaders, DielectricFresnelAtNormalIncidenceGrazingAndPastTheCriticalAngle) {
+  EXPECT_NEAR(dielectric_fresnel(1.0f, 1.0f / 1.5f), 0.04f, 1e-6f) << "((n1 - n2) / (n1 + n2))^2";
+  EXPECT_NEAR(dielectric_fresnel(1.0f, 1.5f), 0.04f, 1e-6f) << "the same leaving the glass";
+  EXPECT_EQ(dielectric_fresnel(0.7f, 1.0f), 0.0f) << "no interface";
+  EXPECT_NEAR(dielectric_fresnel(0.0f, 1.0f / 1.5f), 1.0f, 1e-6f) << "grazing";
+  EXPECT_EQ(dielectric_fresnel(0.5f, 1.5f), 1.0f) << "60 degrees inside glass: total internal reflection";
+}
+
+TEST(Shaders, MirrorGlassAndShinymetalDescribeTheirTracedRays) {
+  Diagnostics diag([](const Diagnostic&) {});
+  ShadingPoint sp;
+  sp.N = {0, 1, 0};
+  sp.I = {0, -1, 0};
+  sp.Cs = {0.5f, 0.25f, 1.0f};
+  sp.Os = {1, 1, 1};
+  SurfaceLobes mirror = make_surface_shader("mirror", {}, {}, diag)->lobes(sp);
+  EXPECT_EQ(mirror.reflection, (Vec3f{1, 1, 1})) << "Kr = 1";
+  EXPECT_EQ(mirror.transmission, (Vec3f{}));
+  EXPECT_EQ(mirror.ambient, (Vec3f{})) << "Ka = 0";
+  SurfaceLobes shiny = make_surface_shader("shinymetal", {}, {}, diag)->lobes(sp);
+  EXPECT_EQ(shiny.reflection, sp.Cs) << "Kr * Cs";
+  SurfaceLobes metal = make_surface_shader("metal", {}, {}, diag)->lobes(sp);
+  EXPECT_EQ(metal.reflection, (Vec3f{})) << "RI metal has no Kr";
+  SurfaceLobes glass = make_surface_shader("glass", {}, {}, diag)->lobes(sp);
+  EXPECT_NEAR(glass.reflection.x, 0.04f, 1e-6f) << "Kr * F at normal incidence";
+  EXPECT_NEAR(glass.transmission.x, 0.96f, 1e-6f) << "Kt * (1 - F)";
+  EXPECT_NEAR(glass.eta, 1.0f / 1.5f, 1e-7f) << "entering";
+  sp.N = {0, -1, 0};  // seen from inside
+  SurfaceLobes leaving = make_surface_shader("glass", {}, {}, diag)->lobes(sp);
+  EXPECT_NEAR(leaving.eta, 1.5f, 1e-7f);
+  EXPECT_EQ(leaving.Nf, (Vec3f{0, 1, 0})) << "reflection and refraction about the normal facing the ray";
+}
+
+}  // namespace
+}  // namespace darc
