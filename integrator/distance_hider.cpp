@@ -201,9 +201,10 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const
     // Surfaces are shaded where the sub-ray that found them hit; the footprint stays the ray's.
     const Ray shading_ray = f.surface_point < 0 ? ray : footprint_sub_ray(ray, footprint, f.surface_point);
     const Interaction at = make_interaction(scene, f.primitive, shading_ray, f.t, f.u, &footprint);
-    const PathState here{path.depth, path.weight * level.abuffer.visibility_weight(f)};
+    auto visible = [&] { return path.weight * level.abuffer.visibility_weight(f); };
+    const LazyWeight weight(visible);
     ShadedPoint r = shade_with_secondary_rays(ctx.base.shading, ctx.base.secondary, at, normalize(shading_ray.d),
-                                              &footprint, here, secondary, counters);
+                                              &footprint, path.depth, weight, secondary, counters);
     return {r.Ci, r.Oi};
   };
 

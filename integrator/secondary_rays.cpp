@@ -14,7 +14,8 @@ bool worth_tracing(float weight, const SecondaryRaySettings& s) {
 
 ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const SecondaryRaySettings& settings,
                                       const Interaction& at, const Vec3f& incoming, const RayFootprint* footprint,
-                                      const PathState& path, SecondaryRayTracer& tracer, RayCounters& counters) {
+                                      int depth, const LazyWeight& weight, SecondaryRayTracer& tracer,
+                                      RayCounters& counters) {
   ShadingPoint sp;
   sp.P = at.P;
   sp.N = at.N;
@@ -24,8 +25,8 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
   sp.dPdv = at.dPdv;
   const SurfaceShader& shader = shading.surface(at.material);
   const SurfaceLobes lobes = shader.lobes(sp);
-  // What this point's light can still change in its sample, before the shader's factors.
-  const float point_weight = path.weight;
+  const bool pruning = settings.contribution_threshold > 0;
+  auto path = [&] { return PathState{depth, pruning ? weight.get() : 1.0f}; };
   Vec3f c = lobes.emission;
   LightContribution lc;
   for (const Light* light : shading.lights(at.material)) {
@@ -40,25 +41,25 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
       c += unoccluded;
       continue;
     }
-    if (!worth_tracing(point_weight * max_component(mul(lobes.Oi, unoccluded)), settings)) {
+    if (pruning && !worth_tracing(weight.get() * max_component(mul(lobes.Oi, unoccluded)), settings)) {
       counters.count_pruned(SecondaryKind::Shadow);
       c += unoccluded;  // pruned: the light taken as unoccluded
       continue;
     }
     counters.count_traced(SecondaryKind::Shadow);
-    c += mul(unoccluded, tracer.shadow_transmittance(at, lc.L, lc.distance, footprint, path));
+    c += mul(unoccluded, tracer.shadow_transmittance(at, lc.L, lc.distance, footprint, path()));
   }
 
-  const bool may_bounce = path.depth < settings.max_depth;
+  const bool may_bounce = depth < settings.max_depth;
   auto bounce = [&](const Vec3f& factor, SecondaryKind kind, const Vec3f& dir, const RayFootprint* fp) {
-    const float weight = point_weight * max_component(mul(lobes.Oi, factor));
-    if (!worth_tracing(weight, settings)) {
+    const float ray_weight = path().weight * max_component(mul(lobes.Oi, factor));
+    if (!worth_tracing(ray_weight, settings)) {
       counters.count_pruned(kind);  // pruned: black, what a ray leaving the scene sees
       return;
     }
     counters.count_traced(kind);
     Ray r{at.P, dir, settings.ray_offset};
-    c += mul(factor, tracer.radiance(at, r, fp, PathState{path.depth + 1, weight}));
+    c += mul(factor, tracer.radiance(at, r, fp, PathState{depth + 1, ray_weight}));
   };
   if (may_bounce && max_component(lobes.reflection) > 0) {
     const Vec3f r = reflect(incoming, lobes.Nf);

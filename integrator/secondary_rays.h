@@ -17,6 +17,31 @@ struct PathState {
   float weight = 1;    // how much this ray's result can change its sample (1 for camera rays)
 };
 
+// A point's weight, computed only when a secondary ray asks for it: the distance hider's weight
+// is a sum over the footprint's 64 points, as costly as shading a strand, and most points cast
+// no secondary ray at all.
+class LazyWeight {
+ public:
+  explicit LazyWeight(float value) : value_(value), known_(true) {}
+  // `compute` must outlive this object.
+  template <class Compute>
+  explicit LazyWeight(const Compute& compute)
+      : compute_([](const void* f) { return (*static_cast<const Compute*>(f))(); }), state_(&compute) {}
+  float get() const {
+    if (!known_) {
+      value_ = compute_(state_);
+      known_ = true;
+    }
+    return value_;
+  }
+
+ private:
+  float (*compute_)(const void*) = nullptr;
+  const void* state_ = nullptr;
+  mutable float value_ = 0;
+  mutable bool known_ = false;
+};
+
 class SecondaryRayTracer {
  public:
   virtual ~SecondaryRayTracer() = default;
@@ -45,12 +70,15 @@ struct ShadedPoint {
 };
 
 // Shades `at`, seen along `incoming` (unit direction) with footprint `footprint` (null: exact
-// ray), lit by its lights with shadows, and with its reflected and refracted rays traced by
-// `tracer`, each secondary ray pruned when path.weight x its own factor is below the threshold:
+// ray) by a ray `depth` bounces from the camera whose result at this point can change its sample
+// by `weight` (coverage x transmittance in front x the path's weight), lit by its lights with
+// shadows, and with its reflected and refracted rays traced by `tracer`, each secondary ray
+// pruned when weight x its own factor is below the threshold:
 // a pruned shadow ray counts the light as unoccluded, a pruned reflected or refracted ray as
 // black (what a ray that leaves the scene sees).
 ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const SecondaryRaySettings& settings,
                                       const Interaction& at, const Vec3f& incoming, const RayFootprint* footprint,
-                                      const PathState& path, SecondaryRayTracer& tracer, RayCounters& counters);
+                                      int depth, const LazyWeight& weight, SecondaryRayTracer& tracer,
+                                      RayCounters& counters);
 
 }  // namespace darc

@@ -106,8 +106,9 @@ SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, Ray
     Interaction hit;
     if (!ctx.tracer.nearest_hit(ray, hit, counters, traversal, layer_filter)) break;
     if (layer == 0) out.depth = hit.t;
-    PathState here{path.depth, path.weight * max_component(transmittance)};
-    ShadedPoint r = shade_with_secondary_rays(ctx.shading, ctx.secondary, hit, ray.d, nullptr, here, secondary, counters);
+    const LazyWeight weight(path.weight * max_component(transmittance));
+    ShadedPoint r =
+        shade_with_secondary_rays(ctx.shading, ctx.secondary, hit, ray.d, nullptr, path.depth, weight, secondary, counters);
     out.color += mul(transmittance, r.Ci);
     transmittance = mul(transmittance, Vec3f{1, 1, 1} - r.Oi);
     if (max_component(transmittance) < kMinTransmittance) {
