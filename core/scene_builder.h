@@ -133,6 +133,11 @@ class SceneBuilder : public RiTarget {
   void add_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                     const std::vector<int>& indices, const ParamList& params, const char* request,
                     const SourceLoc& loc);
+  // The ray-tracing conventions (scene_builder_ray_tracing.cpp). One parameter of an Attribute
+  // "light", "visibility" or "render" request:
+  void ray_tracing_attribute(const std::string& category, const Param& param, const SourceLoc& loc);
+  // Whether a light being declared casts ray-traced shadows ("shadowname", Attribute "light").
+  bool light_casts_shadows(const std::string& handle, const ParamList& params, const SourceLoc& loc);
   // Inside MotionBegin/MotionEnd only the first sample (the shutter-open one) is applied.
   bool skip_motion_sample();
   // When recording an ObjectBegin block, stores the call and returns true.
