@@ -51,6 +51,9 @@ struct Attributes {
   // Attribute "light" "shadows" (BMRT, Aqsis): lights declared while it is "on" cast ray-traced
   // shadows, as if they had a "shadowname".
   bool light_shadows = false;
+  // How the primitives block the light of shadow rays (Attribute "visibility" "transmission",
+  // BMRT's Attribute "render" "casts_shadows").
+  Transmission transmission = Transmission::Os;
 };
 
 }  // namespace darc
