@@ -214,6 +214,7 @@ void SceneBuilder::option(const std::string& category, const ParamList& params, 
                            "searchpath \"" + p.name + "\" ignored (only \"archive\" is used)");
     return;
   }
+  if (category == "trace") return trace_option(params, loc);
   diag_.warning_once("option:" + category, loc, "Option", "Option \"" + category + "\" has no effect in darc: ignored");
 }
 

@@ -136,6 +136,8 @@ class SceneBuilder : public RiTarget {
   // The ray-tracing conventions (scene_builder_ray_tracing.cpp). One parameter of an Attribute
   // "light", "visibility" or "render" request:
   void ray_tracing_attribute(const std::string& category, const Param& param, const SourceLoc& loc);
+  // Option "trace": the reflection and refraction depth.
+  void trace_option(const ParamList& params, const SourceLoc& loc);
   // Sets the transmission from a spelling that may ask for shader-computed opacity.
   void set_transmission(Transmission t, bool asks_for_shader_opacity, const SourceLoc& loc);
   // Whether a light being declared casts ray-traced shadows ("shadowname", Attribute "light").

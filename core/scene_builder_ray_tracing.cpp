@@ -1,10 +1,13 @@
 // SceneBuilder's RIB conventions for ray tracing: which lights cast ray-traced shadows (a
-// "shadowname" light parameter, BMRT's Attribute "light" "shadows") and what blocks their light
-// (Attribute "visibility" "transmission", BMRT's Attribute "render" "casts_shadows"). A spelling
-// that asks for something darc does not have (a shadow map, shader-computed opacity) gets the
-// nearest thing it has, with one warning.
+// "shadowname" light parameter, BMRT's Attribute "light" "shadows"), what blocks their light
+// (Attribute "visibility" "transmission", BMRT's Attribute "render" "casts_shadows") and how deep
+// reflection and refraction go (Option "trace" "maxdepth"). A spelling that asks for something
+// darc does not have (a shadow map, shader-computed opacity) gets the nearest thing it has, with
+// one warning.
 #include <fmt/format.h>
 
+#include <cmath>
+#include <limits>
 #include <span>
 
 #include "core/scene_builder.h"
@@ -63,7 +66,30 @@ const TransmissionSpelling& spelling_of(const std::string& what, const Param& p,
   throw RibError(fmt::format("{} must be one of {}, found \"{}\"", what, accepted_values(spellings), value));
 }
 
+// Option "trace" "int maxdepth": any count of bounces is valid (0: no reflection or refraction
+// rays); what it costs is the integrator's business.
+int trace_max_depth(const Param& p) {
+  const char* what = "Option \"trace\" \"maxdepth\"";
+  if (p.decl.is_string() || p.floats.size() != 1) throw RibError(fmt::format("{} must be one integer", what));
+  const double depth = p.floats[0];
+  if (!(depth >= 0) || depth != std::floor(depth) || depth > std::numeric_limits<int>::max())
+    throw RibError(fmt::format("{} must be an integer >= 0, found {}", what, p.floats[0]));
+  return int(depth);
+}
+
 }  // namespace
+
+void SceneBuilder::trace_option(const ParamList& params, const SourceLoc& loc) {
+  if (!option_allowed("Option", loc)) return;
+  for (const Param& p : params.params) {
+    if (p.name == "maxdepth") {
+      options_.output.trace_max_depth = trace_max_depth(p);
+      continue;
+    }
+    diag_.warning_once("option:trace:" + p.name, loc, "Option",
+                       "Option \"trace\" \"" + p.name + "\" has no effect in darc: ignored");
+  }
+}
 
 void SceneBuilder::set_transmission(Transmission t, bool asks_for_shader_opacity, const SourceLoc& loc) {
   if (asks_for_shader_opacity)

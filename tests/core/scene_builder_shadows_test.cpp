@@ -1,6 +1,6 @@
 // SceneBuilder and the RIB conventions for ray tracing: which lights cast shadows ("shadowname",
 // Attribute "light" "shadows") and what blocks their light (Attribute "visibility"
-// "transmission", Attribute "render" "casts_shadows").
+// "transmission", Attribute "render" "casts_shadows"), and Option "trace" "maxdepth".
 #include <gtest/gtest.h>
 
 #include <string>
@@ -268,6 +268,61 @@ WorldEnd
   EXPECT_EQ(m[5], m[0]) << "the instance's attributes end with it";
   EXPECT_EQ(s.materials[m[0]].transmission, Transmission::Os);
   EXPECT_EQ(s.materials[m[1]].transmission, Transmission::Transparent);
+}
+
+TEST(SceneBuilderTraceDepth, DefaultIsTen) {
+  Built b = build("WorldBegin WorldEnd");
+  ASSERT_EQ(b.scenes.size(), 1u);
+  EXPECT_EQ(b.scenes[0].output.trace_max_depth, 10);
+}
+
+TEST(SceneBuilderTraceDepth, OptionSetsItAndIsFrameScoped) {
+  Built b = build(R"(Option "trace" "int maxdepth" [3]
+FrameBegin 1
+Option "trace" "maxdepth" 0
+WorldBegin WorldEnd
+FrameEnd
+FrameBegin 2
+WorldBegin WorldEnd
+FrameEnd
+)");
+  ASSERT_EQ(b.scenes.size(), 2u);
+  EXPECT_EQ(b.scenes[0].output.trace_max_depth, 0);
+  EXPECT_EQ(b.scenes[1].output.trace_max_depth, 3) << "FrameEnd restores the option";
+  EXPECT_TRUE(b.diagnostics.empty());
+}
+
+TEST(SceneBuilderTraceDepth, NegativeOrFractionalIsAnError) {
+  Built b = build(R"(Option "trace" "int maxdepth" [-1]
+Option "trace" "maxdepth" [2.5]
+Option "trace" "maxdepth" [1 2]
+WorldBegin WorldEnd
+)");
+  std::vector<Diagnostic> e = reported(b, Severity::Error, "Option \"trace\" \"maxdepth\" must be");
+  ASSERT_EQ(e.size(), 3u);
+  EXPECT_EQ(e[0].message, "Option \"trace\" \"maxdepth\" must be an integer >= 0, found -1");
+  EXPECT_EQ(e[0].request, "Option");
+  EXPECT_EQ(e[0].loc.line, 1);
+  EXPECT_EQ(e[1].loc.line, 2);
+  EXPECT_EQ(e[2].message, "Option \"trace\" \"maxdepth\" must be one integer");
+  ASSERT_EQ(b.scenes.size(), 1u) << "errors before WorldBegin, outside a frame, fail no frame";
+  EXPECT_EQ(b.scenes[0].output.trace_max_depth, 10) << "a rejected value changes nothing";
+}
+
+TEST(SceneBuilderTraceDepth, OtherTraceOptionsWarnOncePerNameAndTheWorldBlockIgnoresIt) {
+  Built b = build(R"(Option "trace" "float bias" [0.01] "int maxdepth" [4]
+Option "trace" "float bias" [0.02] "string samplemode" ["fixed"]
+WorldBegin
+Option "trace" "maxdepth" 7
+WorldEnd
+)");
+  ASSERT_EQ(b.scenes.size(), 1u);
+  EXPECT_EQ(b.scenes[0].output.trace_max_depth, 4);
+  ASSERT_EQ(b.diagnostics.size(), 3u);
+  EXPECT_EQ(b.diagnostics[0].message, "Option \"trace\" \"bias\" has no effect in darc: ignored");
+  EXPECT_EQ(b.diagnostics[1].message, "Option \"trace\" \"samplemode\" has no effect in darc: ignored");
+  EXPECT_EQ(b.diagnostics[2].message, "options cannot change inside WorldBegin/WorldEnd: ignored");
+  EXPECT_EQ(b.diagnostics[2].loc.line, 4);
 }
 
 }  // namespace
