@@ -48,6 +48,12 @@ struct Attributes {
   std::vector<uint32_t> lights_on;  // scene light indices
   std::string area_light;
   std::shared_ptr<const ParamList> area_light_params = std::make_shared<const ParamList>();
+  // Attribute "light" "shadows" (BMRT, Aqsis): lights declared while it is "on" cast ray-traced
+  // shadows, as if they had a "shadowname".
+  bool light_shadows = false;
+  // How the primitives block the light of shadow rays (Attribute "visibility" "transmission",
+  // BMRT's Attribute "render" "casts_shadows").
+  Transmission transmission = Transmission::Os;
 };
 
 }  // namespace darc

@@ -214,6 +214,7 @@ void SceneBuilder::option(const std::string& category, const ParamList& params, 
                            "searchpath \"" + p.name + "\" ignored (only \"archive\" is used)");
     return;
   }
+  if (category == "trace") return trace_option(params, loc);
   diag_.warning_once("option:" + category, loc, "Option", "Option \"" + category + "\" has no effect in darc: ignored");
 }
 
@@ -429,7 +430,10 @@ void SceneBuilder::coord_sys_transform(const std::string& name, const SourceLoc&
 
 void SceneBuilder::attribute(const std::string& category, const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.attribute(category, params, loc); })) return;
-  (void)params;
+  if (category == "light" || category == "visibility" || category == "render") {
+    for (const Param& p : params.params) ray_tracing_attribute(category, p, loc);
+    return;
+  }
   // One warning per category: real files repeat vendor attributes on every object.
   diag_.warning_once("attribute:" + category, loc, "Attribute",
                      "Attribute \"" + category + "\" has no effect in darc: ignored");
@@ -486,7 +490,7 @@ void SceneBuilder::displacement(const std::string& name, const ParamList&, const
 
 void SceneBuilder::add_light(const std::string& name, const std::string& handle, const ParamList& params,
                              const SourceLoc& loc) {
-  LightDesc d{name, params, ctm_, loc};
+  LightDesc d{name, params, ctm_, loc, light_casts_shadows(handle, params, loc)};
   if (!in_world_) {
     diag_.warning_once("prelight", loc, "LightSource",
                        "light declared before WorldBegin: placed relative to the camera and used for every frame");

@@ -133,6 +133,15 @@ class SceneBuilder : public RiTarget {
   void add_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                     const std::vector<int>& indices, const ParamList& params, const char* request,
                     const SourceLoc& loc);
+  // The ray-tracing conventions (scene_builder_ray_tracing.cpp). One parameter of an Attribute
+  // "light", "visibility" or "render" request:
+  void ray_tracing_attribute(const std::string& category, const Param& param, const SourceLoc& loc);
+  // Option "trace": the reflection and refraction depth.
+  void trace_option(const ParamList& params, const SourceLoc& loc);
+  // Sets the transmission from a spelling that may ask for shader-computed opacity.
+  void set_transmission(Transmission t, bool asks_for_shader_opacity, const SourceLoc& loc);
+  // Whether a light being declared casts ray-traced shadows ("shadowname", Attribute "light").
+  bool light_casts_shadows(const std::string& handle, const ParamList& params, const SourceLoc& loc);
   // Inside MotionBegin/MotionEnd only the first sample (the shutter-open one) is applied.
   bool skip_motion_sample();
   // When recording an ObjectBegin block, stores the call and returns true.
@@ -173,10 +182,11 @@ class SceneBuilder : public RiTarget {
     std::vector<uint32_t> lights;
     std::string area_light;
     std::shared_ptr<const ParamList> area_light_params;
+    Transmission transmission;
     auto tie() const {
       return std::make_tuple(std::cref(surface), surface_params.get(), color.x, color.y, color.z, opacity.x, opacity.y, opacity.z, sides,
                       flip_normals, matte, std::cref(lights), std::cref(area_light),
-                             area_light_params.get());
+                             area_light_params.get(), transmission);
     }
     bool operator<(const MaterialKey& o) const { return tie() < o.tie(); }
   };

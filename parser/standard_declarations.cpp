@@ -46,6 +46,9 @@ constexpr std::array kStandardDeclarations = {
     StandardDeclaration{"from", {SC::Uniform, PT::Point, 1}},
     StandardDeclaration{"to", {SC::Uniform, PT::Point, 1}},
     StandardDeclaration{"texturename", {SC::Uniform, PT::String, 1}},
+    // Not in appendix A, but how every renderer's light shaders ask for shadows (shadowspot,
+    // BMRT's "raytrace"); the scene builder reads it from any light.
+    StandardDeclaration{"shadowname", {SC::Uniform, PT::String, 1}},
 };
 
 }  // namespace

@@ -1,6 +1,6 @@
 // The predeclared RI parameter names: the standard primitive variables (RI spec §5 intro) and
-// the parameters of the standard surface and light shaders (RI spec appendix A), so that
-// `"P" [...]` or `"intensity" [3000]` need no Declare.
+// the parameters of the standard surface and light shaders (RI spec appendix A), and the
+// lights' "shadowname", so that `"P" [...]` or `"intensity" [3000]` need no Declare.
 #pragma once
 
 #include <optional>

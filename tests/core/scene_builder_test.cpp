@@ -1,6 +1,7 @@
 // SceneBuilder: the RI graphics state, frames, instancing and the scenes it hands over.
 #include "core/scene_builder.h"
 #include "parser/rib_parser.h"
+#include "core/scenes_from_rib.h"
 
 #include <gtest/gtest.h>
 
@@ -10,25 +11,8 @@
 namespace darc {
 namespace {
 
-struct Built {
-  std::vector<Scene> scenes;
-  std::vector<int> failed;
-  std::vector<Diagnostic> diagnostics;
-};
-
-Built build(const std::string& rib, std::function<bool(int)> selected = {}) {
-  Built out;
-  Diagnostics diag([&](const Diagnostic& d) { out.diagnostics.push_back(d); });
-  SceneBuilder::Callbacks cb;
-  cb.frame_selected = std::move(selected);
-  cb.frame_ready = [&](Scene&& s) { out.scenes.push_back(std::move(s)); };
-  cb.frame_failed = [&](int f) { out.failed.push_back(f); };
-  SceneBuilder builder(diag, cb);
-  RibParser parser(builder, diag);
-  parser.parse_string(rib, "test.rib");
-  builder.finish(SourceLoc{});
-  return out;
-}
+using test::Built;
+using test::build;
 
 std::set<uint32_t> strands(const CurveSet& cs) { return {cs.strand_id.begin(), cs.strand_id.end()}; }
 

@@ -91,6 +91,7 @@ TEST(StandardDeclarations, PrimitiveVariablesAndShaderParameters) {
   EXPECT_EQ(standard_declaration("lightcolor"), parse_param_decl("uniform color"));
   EXPECT_EQ(standard_declaration("from"), parse_param_decl("uniform point"));
   EXPECT_EQ(standard_declaration("texturename"), parse_param_decl("uniform string"));
+  EXPECT_EQ(standard_declaration("shadowname"), parse_param_decl("uniform string"));
   EXPECT_EQ(standard_declaration("roughness"), parse_param_decl("uniform float"));
   EXPECT_FALSE(standard_declaration("foo"));
 }

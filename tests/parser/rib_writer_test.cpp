@@ -101,6 +101,19 @@ TEST(RibWriter, RoundTripOfEveryRequestForm) {
       "AttributeEnd\nObjectBegin 2\nSphere 1 -1 1 360\nObjectEnd\nObjectInstance 2\nWorldEnd\nFrameEnd\n");
 }
 
+// The spellings the scene builder reads for ray tracing: typed, untyped and predeclared.
+TEST(RibWriter, RoundTripOfTheRayTracingAttributesAndOptions) {
+  expect_round_trip(
+      "Option \"trace\" \"int maxdepth\" [3] \"bias\" 0.01\nWorldBegin\n"
+      "LightSource \"spotlight\" 1 \"shadowname\" [\"raytrace\"]\n"
+      "Attribute \"light\" \"string shadows\" [\"on\"]\nAttribute \"light\" \"shadows\" \"off\"\n"
+      "Attribute \"visibility\" \"int transmission\" [1] \"string transmission\" [\"shader\"]\n"
+      "Attribute \"visibility\" \"transmission\" 0\nAttribute \"render\" \"string casts_shadows\" [\"shade\"]\n"
+      "WorldEnd\n");
+  EXPECT_EQ(write_and_record("Option \"trace\" \"int maxdepth\" [3]\n").text,
+            "Option \"trace\" \"uniform int maxdepth\" [3]\n");
+}
+
 TEST(RibWriter, RoundTripOfTheSharedRibs) {
   const fs::path dir = DARC_SHARED_RIBS_DIR "/aqsis";
   if (!fs::is_directory(dir)) GTEST_SKIP() << "shared RIBs not found in " << dir;
