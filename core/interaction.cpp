@@ -12,13 +12,24 @@ T bezier(const T* c, float u) {
   return c[0] * (s * s * s) + c[1] * (3 * s * s * u) + c[2] * (3 * s * u * u) + c[3] * (u * u * u);
 }
 
+// The footprint's stretch on a surface seen at a grazing angle is limited to this factor (the
+// surface seen at under 7 degrees): at the silhouette the exact stretch has no bound, and
+// reflected and refracted footprints would inherit it.
+constexpr float kMaxGrazingStretch = 8.0f;
+
 // The offset of a neighbouring ray's hit on the plane through P with normal n (Igehy's transfer):
 // the neighbour at parameter t is at P + axis, then slides along d onto the plane.
 Vec3f transfer(const Vec3f& axis, const Vec3f& d, const Vec3f& n) {
-  float dn = dot(d, n);
-  // Grazing: the plane would stretch the footprint without bound; keep it perpendicular to the ray.
-  if (std::abs(dn) < 1e-4f * length(d)) return axis - d * (dot(axis, d) / dot(d, d));
-  return axis - d * (dot(axis, n) / dn);
+  const float dn = dot(d, n);
+  const Vec3f perpendicular = axis - d * (dot(axis, d) / dot(d, d));
+  if (std::abs(dn) < 1e-4f * length(d)) return perpendicular;
+  // The exact offset is the perpendicular one plus a slide along the ray; the slide is what grows
+  // without bound at grazing angles, so it is the part shortened to the stretch limit.
+  const Vec3f slide = axis - d * (dot(axis, n) / dn) - perpendicular;
+  const float limit2 = kMaxGrazingStretch * kMaxGrazingStretch * length_squared(perpendicular);
+  const float slide2 = length_squared(slide), room2 = limit2 - length_squared(perpendicular);
+  if (slide2 > room2 && slide2 > 0) return perpendicular + slide * std::sqrt(std::max(0.0f, room2) / slide2);
+  return perpendicular + slide;
 }
 
 }  // namespace

@@ -6,6 +6,20 @@ namespace darc {
 
 namespace {
 
+// Reflection and refraction at a curved surface's silhouette spread a footprint over a large
+// angle (a convex mirror squeezes a hemisphere into the pixels at its rim): exact, but a ray whose
+// footprint spans that much walks thousands of strands. The spread of a secondary ray across one
+// footprint is clamped to this many radians (8.6 degrees). Measured on hair behind a glass sphere
+// at 640x480 (with the grazing stretch limit of core/interaction.cpp): 0.02 leaves the rim
+// visibly aliased, 0.15 renders it as the unclamped footprint does (RMSE 0.0009 between the two)
+// in 2.7 s instead of 6.9 s; neither clamp, 48 s.
+constexpr float kMaxDirectionSpread = 0.15f;
+
+Vec3f clamp_spread(const Vec3f& dd) {
+  const float l = length(dd);
+  return l > kMaxDirectionSpread ? dd * (kMaxDirectionSpread / l) : dd;
+}
+
 // Footprint axes must be (to first order) perpendicular to the ray: a neighbouring ray's origin
 // slid along the ray onto the plane through the origin perpendicular to it.
 Vec3f perpendicular(const Vec3f& v, const Vec3f& unit_dir) { return v - unit_dir * dot(v, unit_dir); }
@@ -15,8 +29,8 @@ RayFootprint footprint(const Vec3f& dox, const Vec3f& doy, const Vec3f& ddx, con
   RayFootprint f;
   f.dox = perpendicular(dox, dir);
   f.doy = perpendicular(doy, dir);
-  f.ddx = ddx;
-  f.ddy = ddy;
+  f.ddx = clamp_spread(ddx);
+  f.ddy = clamp_spread(ddy);
   f.min_radius = min_radius;
   return f;
 }
