@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -30,6 +29,7 @@
 #include "bench/scene_loading.h"
 #include "bench/speed_error_640.h"
 #include "bench/speed_error_report.h"
+#include "bench/timed_render.h"
 #include "integrator/render_frame.h"
 #ifdef DARC_BENCH_HAVE_EMBREE
 #include "bench/embree_render.h"
@@ -39,7 +39,6 @@ namespace darc::bench {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 // The measured settings (N of N x N samples per pixel), cheapest first.
 constexpr int kDistanceSamples[] = {1, 2};
@@ -81,8 +80,6 @@ int render_threads(const Options& o) {
   return o.threads > 0 ? o.threads : std::max(1, int(std::thread::hardware_concurrency()));
 }
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
 // Width in pixels of every visible segment end: the world width over the world size of a pixel
 // at that point (from the rays through neighbouring raster positions).
 WidthStats strand_width_stats(const Scene& scene) {
@@ -111,13 +108,6 @@ WidthStats strand_width_stats(const Scene& scene) {
   return s;
 }
 
-struct TimedImage {
-  Image image;
-  double seconds = 0;  // minimum over the runs
-  int runs = 0;
-  WorkCounters work;   // of the first run (every run counts the same)
-};
-
 WorkCounters work_of(const RayCounters& c) {
   WorkCounters w;
   w.primary_rays = c.primary_rays;
@@ -125,29 +115,6 @@ WorkCounters work_of(const RayCounters& c) {
   w.fragments = c.fragments;
   w.cells_visited = c.cells_visited;
   return w;
-}
-
-// Renders `scene` at N x N samples, repeating cheap renders; only render_frame is timed.
-TimedImage render_timed(Scene& scene, const RenderOptions& ro, int samples_per_axis, int max_runs,
-                        double budget_seconds) {
-  scene.output.pixel_samples[0] = scene.output.pixel_samples[1] = samples_per_axis;
-  TimedImage best;
-  double total = 0;
-  while (best.runs < std::max(1, max_runs) && (best.runs == 0 || total < budget_seconds)) {
-    Diagnostics diag([](const Diagnostic&) {});  // parse already reported; renders repeat the same
-    FrameStats stats;
-    Clock::time_point t0 = Clock::now();
-    Image image = render_frame(scene, ro, diag, stats);
-    double t = seconds_since(t0);
-    total += t;
-    if (best.runs == 0 || t < best.seconds) best.seconds = t;
-    if (best.runs == 0) {  // deterministic: every run gives the same image and counts
-      best.image = std::move(image);
-      best.work = work_of(stats.counters);
-    }
-    ++best.runs;
-  }
-  return best;
 }
 
 RenderOptions render_options(HiderKind hider, const Options& o) {
@@ -237,6 +204,7 @@ void measure_embree(const Scene& scene, const Options& o, const Image& reference
   for (int n : kStochasticSamples) {
     if (n > o.stochastic_max) break;
     TimedImage best;
+    WorkCounters work;
     double total = 0;
     while (best.runs < std::max(1, o.max_runs) && (best.runs == 0 || total < o.repeat_budget_seconds)) {
       auto [image, stats] = render(n);
@@ -244,8 +212,8 @@ void measure_embree(const Scene& scene, const Options& o, const Image& reference
       if (best.runs == 0 || stats.render_seconds < best.seconds) best.seconds = stats.render_seconds;
       if (best.runs == 0) {
         best.image = std::move(image);
-        best.work.primary_rays = stats.primary_rays;
-        best.work.intersect_calls = stats.intersect_calls;
+        work.primary_rays = stats.primary_rays;
+        work.intersect_calls = stats.intersect_calls;
       }
       ++best.runs;
     }
@@ -253,7 +221,7 @@ void measure_embree(const Scene& scene, const Options& o, const Image& reference
     std::fprintf(stderr, "  %-10s %2dx%-2d %8.3f s (%d runs)  rmse %.4g  max %.4g\n", m.hider.c_str(), n, n,
                  m.seconds, m.runs, m.error.rmse, m.error.max_error);
     report.settings.push_back(m);
-    report.work.push_back(best.work);
+    report.work.push_back(work);
     if (auto it = stochastic.find(n); it != stochastic.end()) {
       ImageError agreement = error_against(best.image, it->second);
       report.embree_vs_stochastic.push_back({n, agreement});
@@ -337,7 +305,7 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
     std::fprintf(stderr, "  %-10s %2dx%-2d %8.3f s (%d runs)  rmse %.4g  max %.4g\n", m.hider.c_str(), n, n,
                  m.seconds, m.runs, m.error.rmse, m.error.max_error);
     report.settings.push_back(m);
-    report.work.push_back(t.work);
+    report.work.push_back(work_of(t.counters));
   };
   for (int n : kDistanceSamples) measure(HiderKind::Distance, n);
   for (int n : kStochasticSamples)
