@@ -12,7 +12,7 @@ namespace darc::bench {
 
 struct TimedImage {
   Image image;
-  double seconds = 0;    // wall clock of render_frame, the minimum over the runs
+  double seconds = 0;  // wall clock of render_frame, the minimum over the runs
   int runs = 0;
   RayCounters counters;  // of the first run
 };
