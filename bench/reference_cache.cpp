@@ -35,6 +35,10 @@ std::string reference_cache_key(std::string_view scene_text, int xres, int yres,
   std::snprintf(header, sizeof header, "%s\nstochastic %dx%d seed %u\nresolution %dx%d\n", kReferenceFormat,
                 settings.samples_per_axis, settings.samples_per_axis, unsigned(settings.seed), xres, yres);
   std::string text = header;
+  if (settings.contribution_threshold != kDefaultContributionThreshold) {
+    std::snprintf(header, sizeof header, "contribution threshold %.9g\n", double(settings.contribution_threshold));
+    text += header;
+  }
   text += scene_text;
   char key[17];
   std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(fnv1a64(text)));

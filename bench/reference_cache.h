@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "integrator/contribution.h"
 #include "integrator/film.h"
 
 namespace darc::bench {
@@ -18,13 +19,18 @@ struct ReferenceSettings {
   int samples_per_axis = 32;  // N x N jittered stochastic samples per pixel
   // Not the measured renders' seed (0): the reference's noise must be independent of theirs.
   uint32_t seed = 7919;
+  // RenderOptions::contribution_threshold of the reference: the renderer's default, or 0 (every
+  // secondary ray traced) for the secondary-ray report.
+  float contribution_threshold = kDefaultContributionThreshold;
 };
 
 // 64-bit FNV-1a: a stable hash (std::hash may differ between library builds).
 uint64_t fnv1a64(std::string_view bytes);
 
 // The cache key: a hash of the scene text, the resolution and the reference settings, as 16
-// hex digits.
+// hex digits. The contribution threshold enters the key only when it is not the renderer's
+// default: the references cached before it was a setting were rendered at the default, and
+// their keys stay valid (a 640x480 reference is hours of CPU).
 std::string reference_cache_key(std::string_view scene_text, int xres, int yres, const ReferenceSettings& settings);
 
 // "<dir>/<scene_name>-<key>.exr".

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/contribution_sweep.h"
 #include "bench/equal_error.h"
 #include "bench/image_error.h"
 
@@ -24,6 +25,8 @@ struct WorkCounters {
   uint64_t fragments = 0;       // A-buffer fragments (distance hider)
   uint64_t cells_visited = 0;   // grid cells visited (darc)
   uint64_t intersect_calls = 0;  // rtcIntersect1 calls (Embree peer)
+  uint64_t secondary_rays = 0;   // shadow, reflection and refraction rays traced (darc)
+  uint64_t pruned_rays = 0;      // secondary rays not traced: contribution weight under the threshold (darc)
 };
 
 // One render setting of one scene, measured.
@@ -84,6 +87,9 @@ struct SceneReport {
   std::vector<std::pair<int, ImageError>> embree_vs_stochastic;
   std::vector<VariantMeasurement> coverage;    // distance 1x1, one per coverage model
   std::vector<VariantMeasurement> sort_interval;  // distance 1x1, empty when not measured
+  // The secondary-ray report's contribution-threshold sweeps, one per hider and sample count
+  // (empty in the other reports).
+  std::vector<ContributionSweep> contribution_sweeps;
 };
 
 // How a run was made, for the report's header.
@@ -100,6 +106,8 @@ struct RunDescription {
   std::string embree;        // "Embree 3.13.5" when the peer was measured, else empty
   bool quick = false;        // the smoke run (reduced resolution and reference)
   std::string accelerator;   // darc's acceleration structure: "bvh" or "grid"
+  float contribution_threshold = 0;            // of the measured renders (RenderOptions)
+  float reference_contribution_threshold = 0;  // of the references
 };
 
 // The CSV's header, in column order.

@@ -2,15 +2,16 @@
 // (1x1, 2x2) and the stochastic hider (1x1 .. 16x16), and with --embree the Embree peer
 // (1x1 .. 16x16, when built), times the renders, compares every image with a cached high-sample
 // stochastic reference, and writes the CSV, the log-log plot and docs/performance.md (or, with
-// --report-stem 640, docs/performance-640.md with work per ray and memory). Run it through
-// scripts/bench-speed-vs-error, which generates the scenes.
+// --report-stem 640, docs/performance-640.md with work per ray and memory; with --secondary,
+// docs/performance-secondary.md with the contribution-threshold sweeps of the scenes with
+// shadows, mirrors and glass). Run it through scripts/bench-speed-vs-error, which generates the
+// scenes.
 //
 //   speed_vs_error [options] NAME=FILE.rib...
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -23,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench/contribution_sweep.h"
 #include "bench/image_error.h"
 #include "bench/log_log_plot.h"
 #include "bench/process_memory.h"
@@ -30,6 +32,8 @@
 #include "bench/scene_loading.h"
 #include "bench/speed_error_640.h"
 #include "bench/speed_error_report.h"
+#include "bench/speed_error_secondary.h"
+#include "bench/timed_render.h"
 #include "integrator/render_frame.h"
 #ifdef DARC_BENCH_HAVE_EMBREE
 #include "bench/embree_render.h"
@@ -39,7 +43,6 @@ namespace darc::bench {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 // The measured settings (N of N x N samples per pixel), cheapest first.
 constexpr int kDistanceSamples[] = {1, 2};
@@ -71,6 +74,11 @@ struct Options {
   std::string report_stem;    // "640": performance-640.md etc. with the 640 report's tables
   bool quick = false;         // label the report as the quick smoke run
   std::string accelerator = to_string(kDefaultAccelerator);  // "bvh" or "grid"
+  // The secondary-ray report: references at threshold 0, the contribution-threshold sweeps,
+  // performance-secondary.md.
+  bool secondary = false;
+  float contribution_threshold = kDefaultContributionThreshold;  // of the measured renders
+  int sweep_stochastic = 2;   // N of the stochastic N x N sweep beside the distance 1x1 one; 0: none
 };
 
 AcceleratorKind accelerator_kind(const Options& o) {
@@ -80,8 +88,6 @@ AcceleratorKind accelerator_kind(const Options& o) {
 int render_threads(const Options& o) {
   return o.threads > 0 ? o.threads : std::max(1, int(std::thread::hardware_concurrency()));
 }
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Width in pixels of every visible segment end: the world width over the world size of a pixel
 // at that point (from the rays through neighbouring raster positions).
@@ -111,43 +117,15 @@ WidthStats strand_width_stats(const Scene& scene) {
   return s;
 }
 
-struct TimedImage {
-  Image image;
-  double seconds = 0;  // minimum over the runs
-  int runs = 0;
-  WorkCounters work;   // of the first run (every run counts the same)
-};
-
 WorkCounters work_of(const RayCounters& c) {
   WorkCounters w;
   w.primary_rays = c.primary_rays;
   w.segment_tests = c.segment_tests;
   w.fragments = c.fragments;
   w.cells_visited = c.cells_visited;
+  w.secondary_rays = c.secondary_rays;
+  w.pruned_rays = c.pruned_rays;
   return w;
-}
-
-// Renders `scene` at N x N samples, repeating cheap renders; only render_frame is timed.
-TimedImage render_timed(Scene& scene, const RenderOptions& ro, int samples_per_axis, int max_runs,
-                        double budget_seconds) {
-  scene.output.pixel_samples[0] = scene.output.pixel_samples[1] = samples_per_axis;
-  TimedImage best;
-  double total = 0;
-  while (best.runs < std::max(1, max_runs) && (best.runs == 0 || total < budget_seconds)) {
-    Diagnostics diag([](const Diagnostic&) {});  // parse already reported; renders repeat the same
-    FrameStats stats;
-    Clock::time_point t0 = Clock::now();
-    Image image = render_frame(scene, ro, diag, stats);
-    double t = seconds_since(t0);
-    total += t;
-    if (best.runs == 0 || t < best.seconds) best.seconds = t;
-    if (best.runs == 0) {  // deterministic: every run gives the same image and counts
-      best.image = std::move(image);
-      best.work = work_of(stats.counters);
-    }
-    ++best.runs;
-  }
-  return best;
 }
 
 RenderOptions render_options(HiderKind hider, const Options& o) {
@@ -155,6 +133,7 @@ RenderOptions render_options(HiderKind hider, const Options& o) {
   ro.hider = hider;
   ro.threads = o.threads;
   ro.seed = kMeasuredSeed;
+  ro.contribution_threshold = o.contribution_threshold;
   return ro;
 }
 
@@ -181,6 +160,7 @@ std::optional<Image> reference_image(Scene& scene, const std::string& text, cons
                settings.samples_per_axis);
   RenderOptions ro = render_options(HiderKind::Stochastic, o);
   ro.seed = settings.seed;
+  ro.contribution_threshold = settings.contribution_threshold;
   TimedImage ref = render_timed(scene, ro, settings.samples_per_axis, 1, 0);
   render_seconds = ref.seconds;
   std::string error = store_cached_reference(path, ref.image, key);
@@ -237,6 +217,7 @@ void measure_embree(const Scene& scene, const Options& o, const Image& reference
   for (int n : kStochasticSamples) {
     if (n > o.stochastic_max) break;
     TimedImage best;
+    WorkCounters work;
     double total = 0;
     while (best.runs < std::max(1, o.max_runs) && (best.runs == 0 || total < o.repeat_budget_seconds)) {
       auto [image, stats] = render(n);
@@ -244,8 +225,8 @@ void measure_embree(const Scene& scene, const Options& o, const Image& reference
       if (best.runs == 0 || stats.render_seconds < best.seconds) best.seconds = stats.render_seconds;
       if (best.runs == 0) {
         best.image = std::move(image);
-        best.work.primary_rays = stats.primary_rays;
-        best.work.intersect_calls = stats.intersect_calls;
+        work.primary_rays = stats.primary_rays;
+        work.intersect_calls = stats.intersect_calls;
       }
       ++best.runs;
     }
@@ -253,7 +234,7 @@ void measure_embree(const Scene& scene, const Options& o, const Image& reference
     std::fprintf(stderr, "  %-10s %2dx%-2d %8.3f s (%d runs)  rmse %.4g  max %.4g\n", m.hider.c_str(), n, n,
                  m.seconds, m.runs, m.error.rmse, m.error.max_error);
     report.settings.push_back(m);
-    report.work.push_back(best.work);
+    report.work.push_back(work);
     if (auto it = stochastic.find(n); it != stochastic.end()) {
       ImageError agreement = error_against(best.image, it->second);
       report.embree_vs_stochastic.push_back({n, agreement});
@@ -264,6 +245,27 @@ void measure_embree(const Scene& scene, const Options& o, const Image& reference
 #else
   (void)scene, (void)o, (void)reference, (void)stochastic, (void)report;
 #endif
+}
+
+// The contribution-threshold sweeps of the secondary-ray report: the distance hider at 1x1 and
+// the stochastic hider at sweep_stochastic x sweep_stochastic, at every swept threshold.
+void measure_contribution_sweeps(Scene& scene, const Options& o, const Image& reference, SceneReport& report) {
+  SweepSettings settings{o.max_runs, o.repeat_budget_seconds, {}};
+  std::vector<std::pair<HiderKind, int>> sweeps{{HiderKind::Distance, 1}};
+  if (o.sweep_stochastic > 0) sweeps.push_back({HiderKind::Stochastic, o.sweep_stochastic});
+  for (const auto& [hider, n] : sweeps) {
+    settings.on_measured = [&, n = n, hider = hider](const ThresholdMeasurement& m) {
+      std::fprintf(stderr,
+                   "  %-10s %2dx%-2d threshold %-6g %8.3f s (%d runs)  traced %llu/%llu/%llu  pruned %llu/%llu/%llu  "
+                   "rmse vs 0 %.3g  vs reference %.3g\n",
+                   to_string(hider).c_str(), n, n, double(m.threshold), m.seconds, m.runs,
+                   (unsigned long long)m.traced[0], (unsigned long long)m.traced[1], (unsigned long long)m.traced[2],
+                   (unsigned long long)m.pruned[0], (unsigned long long)m.pruned[1], (unsigned long long)m.pruned[2],
+                   m.vs_unpruned.rmse, m.vs_reference.rmse);
+    };
+    report.contribution_sweeps.push_back(measure_contribution_sweep(
+        scene, render_options(hider, o), n, kSweptContributionThresholds, reference, settings));
+  }
 }
 
 void measure_variants(Scene& scene, const Options& o, const Image& reference, SceneReport& report) {
@@ -337,13 +339,14 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
     std::fprintf(stderr, "  %-10s %2dx%-2d %8.3f s (%d runs)  rmse %.4g  max %.4g\n", m.hider.c_str(), n, n,
                  m.seconds, m.runs, m.error.rmse, m.error.max_error);
     report.settings.push_back(m);
-    report.work.push_back(t.work);
+    report.work.push_back(work_of(t.counters));
   };
   for (int n : kDistanceSamples) measure(HiderKind::Distance, n);
   for (int n : kStochasticSamples)
     if (n <= o.stochastic_max) measure(HiderKind::Stochastic, n);
   if (o.embree) measure_embree(scene, o, *reference, stochastic_images, report);
   if (o.variants) measure_variants(scene, o, *reference, report);
+  if (o.secondary) measure_contribution_sweeps(scene, o, *reference, report);
   report.load.peak_resident_bytes = peak_resident_bytes();
   report.load.peak_is_per_scene = peak_reset;
   return report;
@@ -377,24 +380,30 @@ RunDescription describe_run(const Options& o) {
 #endif
   run.quick = o.quick;
   run.accelerator = o.accelerator;
+  run.contribution_threshold = o.contribution_threshold;
+  run.reference_contribution_threshold = o.reference.contribution_threshold;
   return run;
 }
 
 // One colour per scene (the first colours of matplotlib's "tab10", a familiar set that stays
 // distinguishable for common colour-vision deficiencies); the hider is told by the line style.
-std::vector<PlotSeries> plot_series(const std::vector<SceneReport>& scenes) {
+std::array<float, 3> scene_color(size_t scene_index) {
   static constexpr std::array<std::array<float, 3>, 6> kSceneColors{{{0.12f, 0.47f, 0.71f},
                                                                      {1.00f, 0.50f, 0.05f},
                                                                      {0.17f, 0.63f, 0.17f},
                                                                      {0.84f, 0.15f, 0.16f},
                                                                      {0.58f, 0.40f, 0.74f},
                                                                      {0.55f, 0.34f, 0.29f}}};
+  return kSceneColors[scene_index % kSceneColors.size()];
+}
+
+std::vector<PlotSeries> plot_series(const std::vector<SceneReport>& scenes) {
   std::vector<PlotSeries> series;
   for (size_t i = 0; i < scenes.size(); ++i) {
     for (const char* hider : {"stochastic", "distance", "embree"}) {
       PlotSeries s;
       s.label = scenes[i].name + " " + hider;
-      s.color = kSceneColors[i % kSceneColors.size()];
+      s.color = scene_color(i);
       s.dashed = std::string(hider) == "distance";
       // The Embree peer: solid like the stochastic hider it is, in the scene's colour halfway to
       // white.
@@ -406,6 +415,39 @@ std::vector<PlotSeries> plot_series(const std::vector<SceneReport>& scenes) {
     }
   }
   return series;
+}
+
+// The contribution-threshold sweeps: one line per scene and sweep through its thresholds in
+// order (0 first), RMSE against the reference over time; dashed: the distance hider.
+std::vector<PlotSeries> sweep_plot_series(const std::vector<SceneReport>& scenes) {
+  std::vector<PlotSeries> series;
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    for (const ContributionSweep& sweep : scenes[i].contribution_sweeps) {
+      PlotSeries s;
+      s.label = scenes[i].name + " " + sweep.hider + " " + std::to_string(sweep.samples_per_axis) + "x" +
+                std::to_string(sweep.samples_per_axis);
+      s.color = scene_color(i);
+      s.dashed = sweep.hider == "distance";
+      for (const ThresholdMeasurement& m : sweep.rows) s.points.push_back({m.seconds, m.vs_reference.rmse});
+      if (!s.points.empty()) series.push_back(std::move(s));
+    }
+  }
+  return series;
+}
+
+bool write_plot(const std::string& path, const std::vector<PlotSeries>& series, const std::string& title) {
+  PlotText text;
+  text.title = title;
+  PlotResult plot = write_log_log_plot(path, series, text);
+  if (!plot.ok) {
+    std::fprintf(stderr, "speed_vs_error: error: %s\n", plot.error.c_str());
+    return false;
+  }
+  if (!plot.text_drawn)
+    std::fprintf(stderr, "speed_vs_error: warning: OpenImageIO found no font; the plot has no labels "
+                         "(install fonts-dejavu-core)\n");
+  std::fprintf(stderr, "wrote %s\n", path.c_str());
+  return true;
 }
 
 bool write_outputs(const Options& o, const std::vector<SceneReport>& scenes) {
@@ -431,7 +473,15 @@ bool write_outputs(const Options& o, const std::vector<SceneReport>& scenes) {
     std::fprintf(stderr, "wrote %s\n", target.c_str());
   };
   const std::string suffix = o.report_stem.empty() ? "" : "-" + o.report_stem;
-  if (o.report_stem.empty()) {
+  if (o.secondary) {
+    write_file("speed-vs-error" + suffix + ".csv", [&](std::ostream& out) {
+      write_speed_error_640_csv(out, scenes, render_threads(o), o.reference.samples_per_axis);
+    });
+    write_file("speed-vs-error" + suffix + "-pruning.csv",
+               [&](std::ostream& out) { write_contribution_sweep_csv(out, scenes); });
+    write_file("performance" + suffix + ".md",
+               [&](std::ostream& out) { write_performance_secondary_markdown(out, describe_run(o), scenes); });
+  } else if (o.report_stem.empty()) {
     write_file("speed-vs-error.csv", [&](std::ostream& out) { write_speed_error_csv(out, rows); });
     write_file("performance.md",
                [&](std::ostream& out) { write_performance_markdown(out, describe_run(o), scenes); });
@@ -443,19 +493,16 @@ bool write_outputs(const Options& o, const std::vector<SceneReport>& scenes) {
                [&](std::ostream& out) { write_performance_640_markdown(out, describe_run(o), scenes); });
   }
 
-  std::string plot_path = (fs::path(o.out_dir) / ("speed-vs-error" + suffix + ".png")).string();
-  PlotText text;
-  text.title = "darc: RMSE against render time (" + o.size + " scenes; solid: stochastic, dashed: distance" +
-               (o.embree ? ", pale: Embree)" : ")");
-  PlotResult plot = write_log_log_plot(plot_path, plot_series(scenes), text);
-  if (!plot.ok) {
-    std::fprintf(stderr, "speed_vs_error: error: %s\n", plot.error.c_str());
-    return false;
-  }
-  if (!plot.text_drawn)
-    std::fprintf(stderr, "speed_vs_error: warning: OpenImageIO found no font; the plot has no labels "
-                         "(install fonts-dejavu-core)\n");
-  std::fprintf(stderr, "wrote %s\n", plot_path.c_str());
+  const std::string scenes_label = o.secondary ? "secondary-ray" : o.size;
+  ok = write_plot((fs::path(o.out_dir) / ("speed-vs-error" + suffix + ".png")).string(), plot_series(scenes),
+                  "darc: RMSE against render time (" + scenes_label +
+                      " scenes; solid: stochastic, dashed: distance" + (o.embree ? ", pale: Embree)" : ")")) &&
+       ok;
+  if (o.secondary)
+    ok = write_plot((fs::path(o.out_dir) / ("speed-vs-error" + suffix + "-pruning.png")).string(),
+                    sweep_plot_series(scenes),
+                    "darc: contribution thresholds 0, 1e-4 .. 0.1 along each line (RMSE against the reference)") &&
+         ok;
   return ok;
 }
 
@@ -486,6 +533,15 @@ int main(int argc, char** argv) {
   app.add_flag("--quick", o.quick, "label the report as the quick smoke run");
   app.add_option("--accelerator", o.accelerator, "darc's acceleration structure (default: the renderer's)")
       ->check(CLI::IsMember({"bvh", "grid"}));
+  app.add_flag("--secondary", o.secondary,
+               "the secondary-ray report: references with every secondary ray traced, the contribution-threshold "
+               "sweeps, performance-secondary.md, speed-vs-error-secondary(-pruning).csv/.png");
+  app.add_option("--contribution-threshold", o.contribution_threshold,
+                 "contribution threshold of the measured renders (default: the renderer's)")
+      ->check(CLI::Range(0.0f, 1.0f));
+  app.add_option("--sweep-stochastic", o.sweep_stochastic,
+                 "--secondary: N of the stochastic N x N threshold sweep (0: only the distance hider's)")
+      ->check(CLI::Range(0, 16));
   app.add_option("scenes", o.scenes, "NAME=FILE.rib")->required();
   CLI11_PARSE(app, argc, argv);
 #ifndef DARC_BENCH_HAVE_EMBREE
@@ -494,6 +550,16 @@ int main(int argc, char** argv) {
     o.embree = false;
   }
 #endif
+
+  if (o.secondary) {
+    o.report_stem = "secondary";
+    o.reference.contribution_threshold = 0;  // the reference traces every secondary ray
+    if (o.embree) {
+      std::fprintf(stderr,
+                   "speed_vs_error: warning: --secondary: the Embree peer traces camera rays only: no Embree rows\n");
+      o.embree = false;
+    }
+  }
 
   std::vector<SceneReport> reports;
   for (const std::string& arg : o.scenes) {
