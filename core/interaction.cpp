@@ -2,6 +2,9 @@
 
 #include "core/curve_basis.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace darc {
 
 namespace {
@@ -84,8 +87,22 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
     return it;
   }
   if (footprint) {
-    it.dPdx = transfer(footprint->axis_x(t), ray.d, plane_normal);
-    it.dPdy = transfer(footprint->axis_y(t), ray.d, plane_normal);
+    // A strand thinner than the footprint fills only a band of it: the part of the footprint that
+    // is this strand is the band along the tangent, as long as the footprint and as wide as the
+    // strand, centred on its axis. Rays leaving the strand (shadow rays above all) start there, so
+    // that neighbours beside it in the same footprint do not shade it as if they were in front.
+    const Vec3f ax = transfer(footprint->axis_x(t), ray.d, plane_normal);
+    const Vec3f ay = transfer(footprint->axis_y(t), ray.d, plane_normal);
+    const float side = std::sqrt(length(cross(ax, ay)));
+    const Vec3f across = normalize(cross(it.dPdv, ray.d));
+    const float width = std::abs(bezier(scene.curves.widths(local), u));
+    it.P = bezier(scene.curves.control_points(local), u);
+    it.dPdx = it.dPdv * side;
+    it.dPdy = across * std::min(side, width);
+    if (length_squared(across) == 0.0f) {  // seen along its tangent: the footprint as it is
+      it.dPdx = ax;
+      it.dPdy = ay;
+    }
   }
   return it;
 }

@@ -40,7 +40,8 @@ RayFootprint camera_footprint(const Camera& cam, double x, double y, double spac
 // Returns the nearest fragment's depth.
 template <class Shade>
 float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const RayFootprint& footprint,
-                        RayCounters& counters, RayScratch& scratch, Shade&& shade, const HitFilter& filter) {
+                        RayCounters& counters, RayScratch& scratch, Shade&& shade, const HitFilter& filter,
+                        float min_transmittance) {
   const Scene& scene = ctx.base.scene;
   const CurveSet& cs = scene.curves;
   Ray ray = ray_in;
@@ -117,7 +118,7 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
     // Nothing pending is final yet: compositing would do nothing.
     if (t_final < abuffer.nearest_pending() && t_final < ray.tmax) return true;
     if (abuffer.composite_until(t_final, shade) > 0 &&
-        max_component(abuffer.transmittance()) < kDistanceMinTransmittance) {
+        max_component(abuffer.transmittance()) < min_transmittance) {
       terminated = true;
       return false;
     }
@@ -173,7 +174,8 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
       filter.origin_min_t = std::numeric_limits<float>::infinity();
     }
     return trace_footprint_transmittance(ctx_, ray, shadow_footprint(at, l, ctx_.min_radius), counters_,
-                                         scratch_.at(size_t(path.depth) + 1), filter);
+                                         scratch_.at(size_t(path.depth) + 1), filter,
+                                         stopping_transmittance(s, path.weight, kDistanceMinTransmittance));
   }
 
   Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint* footprint, const PathState& next) override {
@@ -209,7 +211,8 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const
   };
 
   SampleValue out;
-  out.depth = collect_fragments(ctx, ray, footprint, counters, level, shade, filter);
+  out.depth = collect_fragments(ctx, ray, footprint, counters, level, shade, filter,
+                                stopping_transmittance(ctx.base.secondary, path.weight, kDistanceMinTransmittance));
   out.color = level.abuffer.color();
   Vec3f tr = level.abuffer.transmittance();
   out.alpha = 1.0f - (tr.x + tr.y + tr.z) / 3.0f;
@@ -217,7 +220,8 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const
 }
 
 Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
-                                    RayCounters& counters, RayScratch& scratch, const HitFilter& filter) {
+                                    RayCounters& counters, RayScratch& scratch, const HitFilter& filter,
+                                    float min_transmittance) {
   const Scene& scene = ctx.base.scene;
   const CurveSet& cs = scene.curves;
   HitFilter shadow = filter;
@@ -232,7 +236,7 @@ Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, 
     uint32_t material = kind == Scene::PrimKind::Sphere ? scene.sphere_material[local] : scene.polygon_material[local];
     return {Vec3f{}, shadow_opacity(scene.materials[material], scene.materials[material].opacity)};
   };
-  collect_fragments(ctx, ray, footprint, counters, scratch, opacity, shadow);
+  collect_fragments(ctx, ray, footprint, counters, scratch, opacity, shadow, min_transmittance);
   return scratch.abuffer.transmittance();
 }
 

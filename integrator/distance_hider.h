@@ -111,12 +111,13 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const
 
 // The transmittance of the footprint along `ray` (mean over its 8x8 points): every strand and
 // surface it passes, front to back, as coverage x opacity, through the same walk and A-buffer as
-// camera rays (so thin strands attenuate smoothly); stops once below kDistanceMinTransmittance.
+// camera rays (so thin strands attenuate smoothly); stops once below `min_transmittance`.
 // Hits `filter` skips are left out (the strand or surface a shadow ray starts on); each primitive
 // blocks by its Transmission attribute (shadow_opacity). Opacity is the primitive's Os: shaders
 // that change Oi are not consulted.
 Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
-                                    RayCounters& counters, RayScratch& scratch, const HitFilter& filter);
+                                    RayCounters& counters, RayScratch& scratch, const HitFilter& filter,
+                                    float min_transmittance = kDistanceMinTransmittance);
 // The same, leaving out strand `skip_strand` only (kNoStrand: none).
 Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
                                     RayCounters& counters, RayScratch& scratch, uint32_t skip_strand);

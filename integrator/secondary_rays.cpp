@@ -41,13 +41,14 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
       c += unoccluded;
       continue;
     }
-    if (pruning && !worth_tracing(weight.get() * max_component(mul(lobes.Oi, unoccluded)), settings)) {
+    const float shadow_weight = pruning ? weight.get() * max_component(mul(lobes.Oi, unoccluded)) : 1.0f;
+    if (pruning && !worth_tracing(shadow_weight, settings)) {
       counters.count_pruned(SecondaryKind::Shadow);
       c += unoccluded;  // pruned: the light taken as unoccluded
       continue;
     }
     counters.count_traced(SecondaryKind::Shadow);
-    c += mul(unoccluded, tracer.shadow_transmittance(at, lc.L, lc.distance, footprint, path()));
+    c += mul(unoccluded, tracer.shadow_transmittance(at, lc.L, lc.distance, footprint, PathState{depth, shadow_weight}));
   }
 
   const bool may_bounce = depth < settings.max_depth;

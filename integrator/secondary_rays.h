@@ -9,6 +9,8 @@
 #include "integrator/render_stats.h"
 #include "shading/scene_shading.h"
 
+#include <algorithm>
+
 namespace darc {
 
 // Where a ray is on its path from the camera.
@@ -46,7 +48,8 @@ class SecondaryRayTracer {
  public:
   virtual ~SecondaryRayTracer() = default;
   // The transmittance from `at` toward a light in unit direction l, up to `distance` (infinity
-  // for distant lights). `footprint`: the incoming ray's, or null for exact rays.
+  // for distant lights). `footprint`: the incoming ray's, or null for exact rays. path.weight is
+  // the shadow ray's own weight (what its transmittance multiplies).
   virtual Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance,
                                      const RayFootprint* footprint, const PathState& path) = 0;
   // The colour seen along a reflected or refracted ray from `at` (with its footprint, or null for
@@ -63,6 +66,14 @@ struct SecondaryRaySettings {
   // side; the near root is the start point itself, moved by rounding).
   float self_offset = 0;
 };
+
+// The transmittance below which a ray of weight `weight` stops: what is behind can change its
+// sample by at most weight x transmittance, so with a threshold the ray stops once that is under
+// it, and never later than at `floor` (the hider's own limit for camera rays).
+inline float stopping_transmittance(const SecondaryRaySettings& s, float weight, float floor) {
+  if (!(s.contribution_threshold > 0) || !(weight > 0)) return floor;
+  return std::min(1.0f, std::max(floor, s.contribution_threshold / weight));
+}
 
 struct ShadedPoint {
   Vec3f Ci;  // premultiplied by Oi

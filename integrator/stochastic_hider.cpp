@@ -34,11 +34,12 @@ class ExactSecondaryRays : public SecondaryRayTracer {
     HitFilter filter = shadow_filter(at);
     Vec3f tr{1, 1, 1};
     TraversalScratch& traversal = scratch_.at(size_t(path.depth) + 1).traversal;
+    const float stop = stopping_transmittance(ctx_.secondary, path.weight, kMinTransmittance);
     for (int layer = 0; layer < kMaxLayers; ++layer) {
       Interaction hit;
       if (!ctx_.tracer.nearest_hit(ray, hit, counters_, traversal, filter)) break;
       tr = mul(tr, Vec3f{1, 1, 1} - shadow_opacity(ctx_.scene.materials[hit.material], hit.Os));
-      if (max_component(tr) < kMinTransmittance) return {};
+      if (max_component(tr) < stop) return max_component(tr) < kMinTransmittance ? Vec3f{} : tr;
       ray.tmin = hit.t + kContinueEpsilon * std::max(1.0f, hit.t);
     }
     return tr;
@@ -102,6 +103,7 @@ SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, Ray
   TraversalScratch& traversal = scratch.at(size_t(path.depth)).traversal;
   // The filter holds for every layer (a continued ray is still the ray that left the point).
   const HitFilter& layer_filter = filter;
+  const float stop = stopping_transmittance(ctx.secondary, path.weight, kMinTransmittance);
   for (int layer = 0; layer < kMaxLayers; ++layer) {
     Interaction hit;
     if (!ctx.tracer.nearest_hit(ray, hit, counters, traversal, layer_filter)) break;
@@ -111,9 +113,9 @@ SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, Ray
         shade_with_secondary_rays(ctx.shading, ctx.secondary, hit, ray.d, nullptr, path.depth, weight, secondary, counters);
     out.color += mul(transmittance, r.Ci);
     transmittance = mul(transmittance, Vec3f{1, 1, 1} - r.Oi);
-    if (max_component(transmittance) < kMinTransmittance) {
+    if (max_component(transmittance) < stop) {
       ++counters.rays_terminated_early;
-      transmittance = {};
+      if (max_component(transmittance) < kMinTransmittance) transmittance = {};
       break;
     }
     ray.tmin = hit.t + kContinueEpsilon * std::max(1.0f, hit.t);
