@@ -96,9 +96,15 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
     const float side = std::sqrt(length(cross(ax, ay)));
     const Vec3f across = normalize(cross(it.dPdv, ray.d));
     const float width = std::abs(bezier(scene.curves.widths(local), u));
-    it.P = bezier(scene.curves.control_points(local), u);
+    const float band = std::min(side, width);
+    // The band's centre: on the axis when the strand is thinner than the footprint; where the ray
+    // crosses the ribbon when it is wider (kept inside the ribbon by half the band).
+    const Vec3f axis_point = bezier(scene.curves.control_points(local), u);
+    const float room = std::max(0.0f, 0.5f * (width - band));
+    const float offset = std::clamp(dot(it.P - axis_point, across), -room, room);
+    it.P = axis_point + across * offset;
     it.dPdx = it.dPdv * side;
-    it.dPdy = across * std::min(side, width);
+    it.dPdy = across * band;
     if (length_squared(across) == 0.0f) {  // seen along its tangent: the footprint as it is
       it.dPdx = ax;
       it.dPdy = ay;
