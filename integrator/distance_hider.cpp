@@ -165,16 +165,8 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
                              const PathState& path) override {
     const SecondaryRaySettings& s = ctx_.base.secondary;
     Ray ray{at.P, l, s.ray_offset, distance};
-    HitFilter filter;
-    filter.shadow = true;
-    filter.skip_strand = at.strand;
-    // Spheres and polygons are convex or flat toward a light their point faces: never hit again.
-    if (!at.is_curve) {
-      filter.origin_primitive = at.primitive;
-      filter.origin_min_t = std::numeric_limits<float>::infinity();
-    }
     return trace_footprint_transmittance(ctx_, ray, shadow_footprint(at, l, ctx_.min_radius), counters_,
-                                         scratch_.at(size_t(path.depth) + 1), filter,
+                                         scratch_.at(size_t(path.depth) + 1), shadow_filter(at),
                                          stopping_transmittance(s, path.weight, kDistanceMinTransmittance));
   }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/curve_set.h"
+#include "core/interaction.h"
 #include "core/scene.h"
 
 #include <cstdint>
@@ -23,6 +24,34 @@ struct HitFilter {
 
   bool skips_primitive(uint32_t primitive, float t) const { return primitive == origin_primitive && t < origin_min_t; }
 };
+
+// The filter of a shadow ray leaving `at`: it never hits the strand it starts on, nor the sphere
+// or polygon (convex or flat toward a light the point faces, so never in the way).
+inline HitFilter shadow_filter(const Interaction& at) {
+  HitFilter f;
+  f.shadow = true;
+  f.skip_strand = at.strand;
+  if (!at.is_curve) {
+    f.origin_primitive = at.primitive;
+    f.origin_min_t = std::numeric_limits<float>::infinity();
+  }
+  return f;
+}
+
+// The filter of a reflected or refracted ray leaving `at`: its strand is never hit; a planar
+// polygon cannot be hit again; a sphere only beyond `self_distance` (its far side).
+inline HitFilter leaving_filter(const Interaction& at, const Scene& scene, float self_distance) {
+  HitFilter f;
+  f.skip_strand = at.strand;
+  if (!at.is_curve) {
+    uint32_t local;
+    f.origin_primitive = at.primitive;
+    f.origin_min_t = scene.prim_kind(at.primitive, local) == Scene::PrimKind::Polygon
+                         ? std::numeric_limits<float>::infinity()
+                         : self_distance;
+  }
+  return f;
+}
 
 // How much of the light a shadow ray's hit of material `m` with opacity `os` blocks.
 inline Vec3f shadow_opacity(const Material& m, const Vec3f& os) {

@@ -50,19 +50,6 @@ class ExactSecondaryRays : public SecondaryRayTracer {
   }
 
  private:
-  // A shadow ray never hits the strand or surface it leaves: spheres and polygons are convex or
-  // flat toward a light their point faces, and strands are excluded by id.
-  static HitFilter shadow_filter(const Interaction& at) {
-    HitFilter f;
-    f.shadow = true;
-    f.skip_strand = at.strand;
-    if (!at.is_curve) {
-      f.origin_primitive = at.primitive;
-      f.origin_min_t = std::numeric_limits<float>::infinity();
-    }
-    return f;
-  }
-
   const HiderContext& ctx_;
   RayCounters& counters_;
   RayScratchStack& scratch_;
@@ -78,19 +65,6 @@ SecondaryRaySettings make_secondary_settings(const Scene& scene, float contribut
   s.ray_offset = kRayOffsetSceneFraction * std::max(max_component(extent), 1e-6f);
   s.self_offset = kSelfOffsetSceneFraction * std::max(max_component(extent), 1e-6f);
   return s;
-}
-
-HitFilter leaving_filter(const Interaction& at, const Scene& scene, float self_distance) {
-  HitFilter f;
-  f.skip_strand = at.strand;
-  if (!at.is_curve) {
-    uint32_t local;
-    f.origin_primitive = at.primitive;
-    f.origin_min_t = scene.prim_kind(at.primitive, local) == Scene::PrimKind::Polygon
-                         ? std::numeric_limits<float>::infinity()
-                         : self_distance;
-  }
-  return f;
 }
 
 SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, RayCounters& counters,

@@ -43,8 +43,4 @@ struct SampleValue {
 SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& ray, RayCounters& counters, RayScratchStack& scratch,
                              const PathState& path = {}, const HitFilter& filter = {});
 
-// The filter for a reflected or refracted ray leaving `at`: its strand is never hit; a planar
-// polygon cannot be hit again; a sphere only beyond `self_distance` (its far side).
-HitFilter leaving_filter(const Interaction& at, const Scene& scene, float self_distance);
-
 }  // namespace darc
