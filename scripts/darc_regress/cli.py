@@ -66,11 +66,11 @@ def _tests_to_approve(patterns: list[str] | None, cases: list[TestCase], parser)
 
 
 def _update_command(args) -> str:
-    """The command line that approves one test (NAME stands for it), as this run was called."""
+    """The command line that approves tests (their names follow), as this run was called."""
     words = [sys.argv[0], args.suite]
     if args.darc != _parser().get_default("darc"):
         words += ["--darc", args.darc]
-    return shlex.join(words) + " --update NAME"
+    return shlex.join(words + ["--update"])
 
 
 def _run_safely(case: TestCase, settings: RunSettings, approve: bool) -> TestOutcome:
@@ -129,7 +129,7 @@ def main(argv: list[str] | None = None) -> int:
 
     suite_name = suite_folder.resolve().name
     counts = ", ".join(f"{sum(o.verdict == v for o in outcomes)} {v}" for v in VERDICTS)
-    summary = f"{len(outcomes)} tests: {counts}; {seconds:.1f} s with {jobs} jobs, darc {settings.darc}"
+    summary = f"{len(outcomes)} tests: {counts}; {seconds:.1f} s (--jobs {jobs}), darc {settings.darc}"
     write_html(outcomes, suite_name, summary, out / "index.html")
     write_junit(outcomes, suite_name, seconds, out / "junit.xml")
     print(summary)

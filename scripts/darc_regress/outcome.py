@@ -4,6 +4,7 @@ golden image, write the report's PNGs."""
 from __future__ import annotations
 
 import dataclasses
+import shlex
 import shutil
 from pathlib import Path
 
@@ -37,7 +38,7 @@ class RunSettings:
     darc: Path
     out: Path  # the output folder; renders go to out/renders, PNGs to out/images
     threads: int  # darc's --threads for each render
-    update_command: str  # the command line that approves a test, with NAME where its name goes
+    update_command: str  # the command line that approves tests, but for their names
 
 
 RENDERS_FOLDER = "renders"
@@ -62,7 +63,7 @@ def run_test(case: TestCase, settings: RunSettings, approve: bool) -> TestOutcom
         shutil.copyfile(new_image, case.golden)
         outcome.approved = True
     if not case.golden.exists():
-        command = settings.update_command.replace("NAME", case.name)
+        command = f"{settings.update_command} {shlex.quote(case.name)}"
         outcome.message = f"no golden image {case.golden}; to approve this render as the golden image, run: {command}"
         return outcome
     golden_buf, problem = comparison.read_image(case.golden)
