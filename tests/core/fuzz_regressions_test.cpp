@@ -26,5 +26,22 @@ TEST(FuzzRegressions, GeneralPolygonWithMoreVerticesThanPointsFailsBeforeAllocat
   EXPECT_EQ(error.loc.line, 2);
 }
 
+// darc_fuzz_scene: heap-use-after-free. An object left open across WorldBegin was freed by
+// WorldEnd (which drops the world's objects) while the builder still recorded into it.
+TEST(FuzzRegressions, WorldBeginInsideAnObjectIsAnError) {
+  Built b = build("ObjectBegin \"a\"\nWorldBegin\nWorldEnd\nSphere 1 -1 1 360\nObjectEnd\n");
+  EXPECT_TRUE(b.scenes.empty());
+  const Diagnostic error = first_error(b);
+  EXPECT_EQ(error.message, "WorldBegin inside an ObjectBegin block");
+  EXPECT_EQ(error.loc.line, 2);
+}
+
+// Objects may still be defined before the world block and used in it.
+TEST(FuzzRegressions, ObjectsBeforeTheWorldBlockStillWork) {
+  Built b = build("ObjectBegin \"a\" Sphere 1 -1 1 360 ObjectEnd\nWorldBegin ObjectInstance \"a\" WorldEnd\n");
+  ASSERT_EQ(b.scenes.size(), 1u);
+  EXPECT_EQ(b.scenes[0].spheres.size(), 1u);
+}
+
 }  // namespace
 }  // namespace darc::test
