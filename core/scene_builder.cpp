@@ -88,6 +88,8 @@ void SceneBuilder::frame_end(const SourceLoc& loc) {
 
 void SceneBuilder::world_begin(const SourceLoc& loc) {
   if (in_world_) throw RibError("WorldBegin inside a world block");
+  // WorldEnd drops the objects, the one being recorded too: it must not be left open across.
+  if (recording_) throw RibError("WorldBegin inside an ObjectBegin block");
   push_block(Block::World, loc);
   ++world_blocks_seen_;
   if (!in_frame_) {

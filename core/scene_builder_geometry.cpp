@@ -143,6 +143,12 @@ void SceneBuilder::general_polygon(const std::vector<int>& nverts_per_loop, cons
     if (n < 3) throw RibError("each loop needs at least 3 vertices, found " + std::to_string(n));
     total += size_t(n);
   }
+  // The loops take the points in order: a count beyond them fails before the index list is
+  // allocated (else "GeneralPolygon [2000000000]" in a 50-byte file asks for 8 GB).
+  const size_t points = read_points(params, "GeneralPolygon").size() / 3;
+  if (total > points)
+    throw RibError("the loops have " + std::to_string(total) + " vertices but only " + std::to_string(points) +
+                   " points are given");
   std::vector<int> indices(total);
   for (size_t i = 0; i < total; ++i) indices[i] = int(i);
   add_polygons({int(nverts_per_loop.size())}, nverts_per_loop, indices, params, "GeneralPolygon", loc);

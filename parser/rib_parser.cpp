@@ -179,6 +179,7 @@ std::string RibParser::resolve_archive(const std::string& name) const {
 void RibParser::read_archive(RequestReader& args) {
   const std::string name = args.string("the archive name");
   args.expect_request_end("ReadArchive");
+  if (!archive_files_allowed_) throw RibError(fmt::format("cannot open archive \"{}\": file access is disabled", name));
   const std::string path = resolve_archive(name);
   std::string text;
   std::string reason;

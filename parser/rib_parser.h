@@ -31,6 +31,10 @@ class RibParser {
   // The archive search path currently in effect (from Option "searchpath" "archive").
   const std::vector<std::string>& archive_search_path() const { return archive_path_; }
 
+  // Whether ReadArchive may read files (the default). When off, every ReadArchive is an error
+  // and no file is looked up or opened: for input that must not reach the file system (fuzzing).
+  void allow_archive_files(bool allowed) { archive_files_allowed_ = allowed; }
+
  private:
   void parse_text(std::string text, const std::string& name);
   void parse_requests(Lexer& lexer);
@@ -46,6 +50,7 @@ class RibParser {
   DeclarationMap declared_;
   std::vector<std::string> archive_path_;
   std::vector<std::string> include_stack_;  // files being read, outermost first (canonical paths)
+  bool archive_files_allowed_ = true;
 };
 
 }  // namespace darc

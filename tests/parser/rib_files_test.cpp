@@ -97,6 +97,24 @@ TEST(RibFiles, MissingArchiveIsAnErrorAtTheRequest) {
   EXPECT_EQ(r->target.named("WorldEnd").size(), 1u);
 }
 
+TEST(RibFiles, ArchiveFilesCanBeDisallowed) {
+  TempDir dir;
+  dir.write("part.rib", "Sides 1\n");
+  const std::string absolute = dir.write("abs.rib", "Sides 2\n");
+  const std::string main =
+      dir.write("main.rib", "ReadArchive \"part.rib\"\nReadArchive \"" + absolute + "\"\nSides 1\n");
+  FileParse r;
+  RibParser parser(r.target, r.diag);
+  parser.allow_archive_files(false);
+  EXPECT_FALSE(parser.parse_file(main));
+  ASSERT_EQ(r.diag.error_count(), 2);
+  EXPECT_EQ(r.diag.all()[0].message, "cannot open archive \"part.rib\": file access is disabled");
+  EXPECT_EQ(r.diag.all()[1].loc.line, 2);
+  // Neither archive was read; the request after them was.
+  ASSERT_EQ(r.target.named("Sides").size(), 1u);
+  EXPECT_EQ(r.target.named("Sides")[0].loc.line, 3);
+}
+
 TEST(RibFiles, ArchiveCycleIsAnError) {
   TempDir dir;
   dir.write("a.rib", "Sides 1\nReadArchive \"b.rib\"\n");
