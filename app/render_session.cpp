@@ -34,6 +34,11 @@ bool image_file_is_readable(const std::string& path) {
   return in != nullptr;
 }
 
+// The caps on printed messages (message_budget.h) are summed up once, after everything else.
+void print_suppression_summary(const Diagnostics& diag) {
+  for (const std::string& line : diag.suppression_summary()) std::fprintf(stderr, "darc: %s\n", line.c_str());
+}
+
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 bool has_image_extension(const std::string& name) {
@@ -107,6 +112,7 @@ int run_render_session(const AppOptions& o) {
     RibWriter writer(std::cout);
     RibParser parser(writer, diag);
     for (const std::string& in : o.inputs) parser.parse_file(in);
+    print_suppression_summary(diag);
     return diag.error_count() > 0 ? kExitSceneError : kExitOk;
   }
 
@@ -210,6 +216,7 @@ int run_render_session(const AppOptions& o) {
   builder.finish(SourceLoc{});
   if (o.frames && frames_seen == 0)
     std::fprintf(stderr, "darc: warning: --frames selected none of the frames in the input\n");
+  print_suppression_summary(diag);
 
   if (!o.stats_path.empty()) {
     std::ofstream f(o.stats_path);

@@ -5,8 +5,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <climits>
 #include <cmath>
 #include <filesystem>
+#include <string_view>
 #include <system_error>
 
 namespace darc {
@@ -74,14 +77,46 @@ void unpremultiply(std::vector<float>& rgba) {
   }
 }
 
-void add_metadata(OIIO::ImageSpec& spec, const ImageMetadata& m) {
+// The ImageDescription line that carries the error count in formats without custom attributes.
+const std::string kErrorCountDescriptionKey = std::string(kErrorCountAttribute) + "=";
+
+// The frame's errors, in the form each format can hold (ImageMetadata::error_count).
+void add_error_record(OIIO::ImageSpec& spec, const ImageMetadata& m, ImageFormat format) {
+  if (m.error_count <= 0) return;
+  switch (format) {
+    case ImageFormat::Exr:  // typed attributes; EXR's int is 32-bit
+      spec.attribute(kErrorCountAttribute, static_cast<int>(std::min<std::int64_t>(m.error_count, INT_MAX)));
+      spec.attribute(kFirstErrorAttribute, m.first_error);
+      break;
+    case ImageFormat::Png:  // OIIO writes string attributes as text chunks and drops the others
+      spec.attribute(kErrorCountAttribute, std::to_string(m.error_count));
+      spec.attribute(kFirstErrorAttribute, m.first_error);
+      break;
+    case ImageFormat::Tiff:
+    case ImageFormat::Jpeg:  // OIIO writes only standard tags for these
+      spec.attribute("ImageDescription", kErrorCountDescriptionKey + std::to_string(m.error_count) + "\n" +
+                                             kFirstErrorAttribute + "=" + m.first_error);
+      break;
+  }
+}
+
+void add_metadata(OIIO::ImageSpec& spec, const ImageMetadata& m, ImageFormat format) {
   if (!m.software.empty()) spec.attribute("Software", m.software);
   if (!m.hider.empty()) spec.attribute("darc:hider", m.hider);
   if (m.samples_per_pixel > 0) spec.attribute("darc:spp", m.samples_per_pixel);
   if (m.render_seconds >= 0.0f) spec.attribute("renderTime", m.render_seconds);
+  add_error_record(spec, m, format);
   for (const auto& a : m.extra) {
     std::visit([&](const auto& v) { spec.attribute(a.name, v); }, a.value);
   }
+}
+
+// A whole decimal integer, or nullopt.
+std::optional<std::int64_t> parse_count(std::string_view text) {
+  std::int64_t value = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
 }
 
 std::string temporary_path(const fs::path& target, int attempt) {
@@ -227,7 +262,7 @@ WriteResult write_image(const std::string& path, const Image& image, const Image
       spec.attribute("compression", metadata.compression.empty() ? kTiffDefaultCompression : metadata.compression);
     }
   }
-  add_metadata(spec, metadata);
+  add_metadata(spec, metadata, *format);
   result.nonfinite_replaced = buffer.nonfinite;
 
   const std::string temp = free_temporary_path(fs::path(path));
@@ -245,6 +280,23 @@ WriteResult write_image(const std::string& path, const Image& image, const Image
   }
   result.ok = true;
   return result;
+}
+
+std::optional<std::int64_t> read_recorded_error_count(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return std::nullopt;
+  const OIIO::ImageSpec& spec = in->spec();
+  if (const OIIO::ParamValue* p = spec.find_attribute(kErrorCountAttribute)) {
+    if (p->type() == OIIO::TypeInt) return p->get_int();
+    if (p->type() == OIIO::TypeString) return parse_count(p->get_string()).value_or(0);
+  }
+  const std::string description = spec.get_string_attribute("ImageDescription");
+  if (description.rfind(kErrorCountDescriptionKey, 0) == 0) {
+    const size_t begin = kErrorCountDescriptionKey.size();
+    const size_t end = std::min(description.find('\n', begin), description.size());
+    return parse_count(std::string_view(description).substr(begin, end - begin)).value_or(0);
+  }
+  return 0;
 }
 
 }  // namespace darc

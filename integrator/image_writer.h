@@ -12,6 +12,11 @@
 
 namespace darc {
 
+// The header attributes that record a frame's scene errors. --skip-existing and the regression
+// runner (scripts/darc-regress) read them back: keep the names.
+inline constexpr const char* kErrorCountAttribute = "darc:errors";       // int: how many
+inline constexpr const char* kFirstErrorAttribute = "darc:first_error";  // "file:line:col: error: ..."
+
 // What is recorded in the file header, and how the file is stored.
 struct ImageMetadata {
   // One extra header attribute; ints and floats keep their type in EXR.
@@ -24,6 +29,13 @@ struct ImageMetadata {
   std::string hider;              // "darc:hider"; empty = not written
   int samples_per_pixel = 0;      // "darc:spp"; <= 0 = not written
   float render_seconds = -1.0f;   // "renderTime" in seconds; < 0 = not written
+  // The errors attributed to the frame (kErrorCountAttribute, kFirstErrorAttribute), written
+  // only when error_count > 0: a frame without errors has neither attribute. EXR keeps them
+  // typed (int, string); PNG as text (its text chunks hold nothing else); TIFF and JPEG, for
+  // which OIIO writes only standard tags, as the ImageDescription "darc:errors=N\n
+  // darc:first_error=MESSAGE". read_recorded_error_count reads any of them back.
+  std::int64_t error_count = 0;
+  std::string first_error;
   // The Display request's "compression" parameter; empty = the format's default (zip for EXR,
   // lzw for TIFF). PNG and JPEG ignore it.
   std::string compression;
@@ -65,5 +77,9 @@ struct WriteResult {
 // removed and nothing is left behind (an existing file at path is left untouched).
 WriteResult write_image(const std::string& path, const Image& image, const ImageMetadata& metadata,
                         const ColorConfig& config, const std::string& mode);
+
+// The error count that write_image recorded in the file at `path` (0 when it records none);
+// nullopt when the file does not open as an image.
+std::optional<std::int64_t> read_recorded_error_count(const std::string& path);
 
 }  // namespace darc

@@ -1,5 +1,7 @@
 #include "parser/diagnostics.h"
 
+#include <fmt/format.h>
+
 #include <cstdio>
 
 namespace darc {
@@ -13,25 +15,38 @@ std::string Diagnostic::str() const {
 Diagnostics::Diagnostics()
     : sink_([](const Diagnostic& d) { std::fprintf(stderr, "%s\n", d.str().c_str()); }) {}
 
-void Diagnostics::emit(Diagnostic d) {
+void Diagnostics::emit(Diagnostic d, MessageBudget& budget) {
+  if (!budget.admit(message_kind(d.request, d.message))) return;
   if (sink_) sink_(d);
   all_.push_back(std::move(d));
 }
 
 void Diagnostics::error(const SourceLoc& loc, const std::string& request, const std::string& message) {
   ++errors_;
-  emit({Severity::Error, loc, request, message});
+  emit({Severity::Error, loc, request, message}, error_budget_);
 }
 
 void Diagnostics::warning(const SourceLoc& loc, const std::string& request, const std::string& message) {
   ++warnings_;
-  emit({Severity::Warning, loc, request, message});
+  emit({Severity::Warning, loc, request, message}, warning_budget_);
 }
 
 void Diagnostics::warning_once(const std::string& key, const SourceLoc& loc, const std::string& request,
                                const std::string& message) {
   if (!warned_keys_.insert(key).second) return;
   warning(loc, request, message);
+}
+
+std::vector<std::string> Diagnostics::suppression_summary() const {
+  std::vector<std::string> lines;
+  auto add = [&](std::int64_t suppressed, const char* singular, const char* plural) {
+    if (suppressed == 0) return;
+    lines.push_back(fmt::format("{} more {} not shown (limit {} per kind, {} in total)", suppressed,
+                                suppressed == 1 ? singular : plural, kMaxShownPerKind, kMaxShownInTotal));
+  };
+  add(error_budget_.suppressed(), "error", "errors");
+  add(warning_budget_.suppressed(), "warning", "warnings");
+  return lines;
 }
 
 }  // namespace darc

@@ -1,10 +1,14 @@
 // Collects warnings and errors from the parser and the scene builder. Messages are formatted
-// "file:line:col: error: Request: message" and printed as they arrive (unless quiet); the
-// counts let a frame decide whether it may be written (an error fails its frame).
+// "file:line:col: error: Request: message" and handed to a sink (by default: printed to stderr)
+// as they arrive. Counting is exact; showing is capped per kind and in total (message_budget.h),
+// and only the shown diagnostics are kept, so a file with millions of errors costs counters,
+// not millions of messages.
 #pragma once
 
+#include "parser/message_budget.h"
 #include "parser/source_loc.h"
 
+#include <cstdint>
 #include <functional>
 #include <set>
 #include <stdexcept>
@@ -43,16 +47,22 @@ class Diagnostics {
   void warning_once(const std::string& key, const SourceLoc& loc, const std::string& request,
                     const std::string& message);
 
-  int error_count() const { return errors_; }
-  int warning_count() const { return warnings_; }
+  // Every error and warning reported, shown or not.
+  std::int64_t error_count() const { return errors_; }
+  std::int64_t warning_count() const { return warnings_; }
+  // The diagnostics within the caps, in the order they arrived (the ones the sink was given).
   const std::vector<Diagnostic>& all() const { return all_; }
+  // One line per severity that had messages past the caps, e.g. "123456 more errors not shown
+  // (limit 20 per kind, 200 in total)"; empty when everything was shown. Print it at the end.
+  std::vector<std::string> suppression_summary() const;
 
  private:
-  void emit(Diagnostic d);
+  void emit(Diagnostic d, MessageBudget& budget);
   Sink sink_;
-  int errors_ = 0;
-  int warnings_ = 0;
+  std::int64_t errors_ = 0;
+  std::int64_t warnings_ = 0;
   std::set<std::string> warned_keys_;
+  MessageBudget error_budget_, warning_budget_;
   std::vector<Diagnostic> all_;
 };
 

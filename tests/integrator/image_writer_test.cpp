@@ -324,5 +324,48 @@ TEST_F(ImageWriter, NonFiniteValuesAreWrittenAsZeroAndCounted) {
   EXPECT_EQ(png_back->pixels[7], 0.0f);
 }
 
+// A frame's errors are recorded in every format: typed in EXR, as text in PNG, in the
+// ImageDescription of TIFF and JPEG (OIIO writes no custom attributes there); all read back.
+TEST_F(ImageWriter, ErrorsAreRecordedInEveryFormatAndReadBack) {
+  Image image = make_image(2, 2, PixelRect{0, 0, 2, 2});
+  ImageMetadata meta;
+  meta.error_count = 3;
+  meta.first_error = "scene.rib:12:3: error: Basis: unknown basis \"bsline\"";
+  for (const char* name : {"e.exr", "e.png", "e.tif", "e.jpg"}) {
+    SCOPED_TRACE(name);
+    const WriteResult result = write_image(path(name), image, meta, config_, "rgba");
+    ASSERT_TRUE(result.ok) << result.error;
+    EXPECT_EQ(read_recorded_error_count(path(name)), 3);
+  }
+  const OIIO::ImageSpec exr = read_back(path("e.exr"))->spec;
+  const OIIO::ParamValue* count = exr.find_attribute(kErrorCountAttribute);
+  ASSERT_NE(count, nullptr);
+  EXPECT_EQ(count->type(), OIIO::TypeInt);
+  EXPECT_EQ(exr.get_int_attribute(kErrorCountAttribute), 3);
+  EXPECT_EQ(exr.get_string_attribute(kFirstErrorAttribute), meta.first_error);
+  const OIIO::ImageSpec png = read_back(path("e.png"))->spec;
+  EXPECT_EQ(png.get_string_attribute(kErrorCountAttribute), "3");
+  EXPECT_EQ(png.get_string_attribute(kFirstErrorAttribute), meta.first_error);
+  for (const char* name : {"e.tif", "e.jpg"}) {
+    EXPECT_EQ(read_back(path(name))->spec.get_string_attribute("ImageDescription"),
+              "darc:errors=3\ndarc:first_error=" + meta.first_error)
+        << name;
+  }
+}
+
+TEST_F(ImageWriter, FramesWithoutErrorsRecordNone) {
+  Image image = make_image(2, 2, PixelRect{0, 0, 2, 2});
+  for (const char* name : {"c.exr", "c.png", "c.tif", "c.jpg"}) {
+    SCOPED_TRACE(name);
+    ASSERT_TRUE(write_image(path(name), image, {}, config_, "rgba").ok);
+    const OIIO::ImageSpec spec = read_back(path(name))->spec;
+    EXPECT_EQ(spec.find_attribute(kErrorCountAttribute), nullptr);
+    EXPECT_EQ(spec.find_attribute(kFirstErrorAttribute), nullptr);
+    EXPECT_EQ(spec.get_string_attribute("ImageDescription"), "");
+    EXPECT_EQ(read_recorded_error_count(path(name)), 0);
+  }
+  EXPECT_EQ(read_recorded_error_count(path("missing.exr")), std::nullopt);
+}
+
 }  // namespace
 }  // namespace darc
