@@ -69,7 +69,6 @@ void SceneBuilder::frame_begin(int number, const SourceLoc& loc) {
   in_frame_ = true;
   frame_number_ = number;
   has_frame_number_ = true;
-  errors_at_frame_start_ = diag_.error_count();
   frame_skipped_ = callbacks_.frame_selected && !callbacks_.frame_selected(number);
 }
 
@@ -93,7 +92,6 @@ void SceneBuilder::world_begin(const SourceLoc& loc) {
   if (!in_frame_) {
     // Without FrameBegin, frames are numbered by world block, from 1.
     frame_number_ = world_blocks_seen_;
-    errors_at_frame_start_ = diag_.error_count();
     frame_skipped_ = callbacks_.frame_selected && !callbacks_.frame_selected(frame_number_);
   }
   saved_attributes_.push_back(attributes_);
@@ -147,7 +145,24 @@ void SceneBuilder::start_scene() {
   next_strand_id_ = 0;
 }
 
+void SceneBuilder::close_blocks_left_open_in_world(const SourceLoc& loc) {
+  if (!in_world_) return;  // pop_block reports the unmatched WorldEnd
+  while (!blocks_.empty() && blocks_.back() != Block::World) {
+    const Block open = blocks_.back();
+    diag_.error(loc, "WorldEnd",
+                std::string(block_name(int(open))) + " at " + block_locs_.back().str() + " is still open: closed here");
+    if (open == Block::Object) {
+      object_end(loc);
+    } else if (open == Block::Attribute) {
+      attribute_end(loc);
+    } else {
+      transform_end(loc);
+    }
+  }
+}
+
 void SceneBuilder::world_end(const SourceLoc& loc) {
+  close_blocks_left_open_in_world(loc);
   pop_block(Block::World, "WorldEnd", loc);
   attributes_ = saved_attributes_.back();
   saved_attributes_.pop_back();
@@ -156,17 +171,11 @@ void SceneBuilder::world_end(const SourceLoc& loc) {
   in_world_ = false;
   objects_.clear();
   std::unique_ptr<Scene> scene = std::move(scene_);
-  if (frame_skipped_) return;
-  if (diag_.error_count() > errors_at_frame_start_) {
-    diag_.error(loc, "WorldEnd",
-                "frame " + std::to_string(frame_number_) + " not rendered: the scene has errors");
-    ++frames_failed_;
-    if (callbacks_.frame_failed) callbacks_.frame_failed(frame_number_);
-  } else {
+  if (!frame_skipped_) {
     ++frames_ready_;
     if (callbacks_.frame_ready) callbacks_.frame_ready(std::move(*scene));
   }
-  if (!in_frame_) errors_at_frame_start_ = diag_.error_count();
+  diag_.end_frame();
 }
 
 void SceneBuilder::attribute_begin(const SourceLoc& loc) {
@@ -253,9 +262,10 @@ void SceneBuilder::crop_window(double x0, double x1, double y0, double y1, const
 void SceneBuilder::projection(const std::string& name, const ParamList& params, const SourceLoc& loc) {
   if (!option_allowed("Projection", loc)) return;
   if (name == "perspective") {
-    options_.projection = Camera::Projection::Perspective;
+    // Checked before anything changes: a request with an error is skipped as a whole.
     double fov = params.get_float("fov", 90.0f);
     if (!(fov > 0 && fov < 180)) throw RibError("fov must be in (0, 180) degrees, found " + std::to_string(fov));
+    options_.projection = Camera::Projection::Perspective;
     options_.fov_degrees = fov;
   } else if (name == "orthographic") {
     options_.projection = Camera::Projection::Orthographic;
@@ -574,16 +584,22 @@ void SceneBuilder::object_instance(const std::string& handle, const SourceLoc& l
   // The object's requests run in their own attribute scope, with the current attributes.
   Attributes saved_attr = attributes_;
   Matrix4 saved_ctm = ctm_;
-  size_t depth = blocks_.size();
-  try {
-    for (auto& call : it->second) call(*this);
-  } catch (...) {
-    replaying_ = false;
-    throw;
+  const size_t depth = blocks_.size(), saved_attr_depth = saved_attributes_.size(), saved_ctm_depth = saved_ctm_.size();
+  // A recorded request with an error is reported at the instance and skipped, like any other
+  // request; the object's other requests still build.
+  for (auto& call : it->second) {
+    try {
+      call(*this);
+    } catch (const RibError& e) {
+      diag_.error(loc, "ObjectInstance", "object \"" + handle + "\": " + e.what());
+    }
   }
   replaying_ = false;
+  // Blocks the object left open close with it.
   blocks_.resize(std::min(blocks_.size(), depth));
   block_locs_.resize(blocks_.size());
+  saved_attributes_.resize(std::min(saved_attributes_.size(), saved_attr_depth));
+  saved_ctm_.resize(std::min(saved_ctm_.size(), saved_ctm_depth));
   attributes_ = saved_attr;
   ctm_ = saved_ctm;
 }

@@ -23,7 +23,9 @@ void Diagnostics::emit(Diagnostic d, MessageBudget& budget) {
 
 void Diagnostics::error(const SourceLoc& loc, const std::string& request, const std::string& message) {
   ++errors_;
-  emit({Severity::Error, loc, request, message}, error_budget_);
+  Diagnostic d{Severity::Error, loc, request, message};
+  if (frame_errors_.count++ == 0) frame_errors_.first = d.str();
+  emit(std::move(d), error_budget_);
 }
 
 void Diagnostics::warning(const SourceLoc& loc, const std::string& request, const std::string& message) {

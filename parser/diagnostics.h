@@ -34,6 +34,13 @@ class RibError : public std::runtime_error {
   explicit RibError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// The errors attributed to one frame: those reported since the previous frame ended, so
+// including any before its FrameBegin or WorldBegin. Its image records them.
+struct FrameErrors {
+  std::int64_t count = 0;
+  std::string first;  // the first of them as Diagnostic::str() gives it; "" when count is 0
+};
+
 class Diagnostics {
  public:
   using Sink = std::function<void(const Diagnostic&)>;
@@ -52,6 +59,10 @@ class Diagnostics {
   std::int64_t warning_count() const { return warnings_; }
   // The diagnostics within the caps, in the order they arrived (the ones the sink was given).
   const std::vector<Diagnostic>& all() const { return all_; }
+  // The errors since the previous end_frame() (shown or not).
+  const FrameErrors& frame_errors() const { return frame_errors_; }
+  // A frame has ended (rendered, or not selected): the errors from here on are the next one's.
+  void end_frame() { frame_errors_ = {}; }
   // One line per severity that had messages past the caps, e.g. "123456 more errors not shown
   // (limit 20 per kind, 200 in total)"; empty when everything was shown. Print it at the end.
   std::vector<std::string> suppression_summary() const;
@@ -61,6 +72,7 @@ class Diagnostics {
   Sink sink_;
   std::int64_t errors_ = 0;
   std::int64_t warnings_ = 0;
+  FrameErrors frame_errors_;
   std::set<std::string> warned_keys_;
   MessageBudget error_budget_, warning_budget_;
   std::vector<Diagnostic> all_;
