@@ -98,6 +98,7 @@ nlohmann::json memory_json(const Scene& scene) {
 
 int run_render_session(const AppOptions& o) {
   Diagnostics diag;
+  if (o.strict) diag.fix_handler(ErrorHandler::Abort);
   for (const std::string& in : o.inputs) {
     if (in == "-") continue;
     std::error_code ec;
@@ -116,7 +117,10 @@ int run_render_session(const AppOptions& o) {
   if (o.cat) {
     RibWriter writer(std::cout);
     RibParser parser(writer, diag);
-    for (const std::string& in : o.inputs) parser.parse_file(in);
+    for (const std::string& in : o.inputs) {
+      if (diag.aborted()) break;
+      parser.parse_file(in);
+    }
     print_suppression_summary(diag);
     return diag.error_count() > 0 ? kExitSceneError : kExitOk;
   }
@@ -229,9 +233,12 @@ int run_render_session(const AppOptions& o) {
   SceneBuilder builder(diag, cb, overrides);
   RibParser parser(builder, diag);
   for (const std::string& in : o.inputs) {
+    if (diag.aborted()) break;
     parser.parse_file(in);
   }
   builder.finish(SourceLoc{});
+  if (diag.aborted())
+    std::fprintf(stderr, "darc: stopped at the first error (%s)\n", o.strict ? "--strict" : "ErrorHandler \"abort\"");
   if (o.frames && frames_seen == 0)
     std::fprintf(stderr, "darc: warning: --frames selected none of the frames in the input\n");
   print_suppression_summary(diag);

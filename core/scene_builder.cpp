@@ -45,6 +45,8 @@ void SceneBuilder::pop_block(Block b, const char* request, const SourceLoc&) {
 }
 
 void SceneBuilder::finish(const SourceLoc& end) {
+  // After ErrorHandler "abort" the input was cut short on purpose: what is open is no new error.
+  if (diag_.aborted()) return;
   while (!blocks_.empty()) {
     diag_.error(block_locs_.back(), block_name(int(blocks_.back())), "block is never closed");
     Block b = blocks_.back();
@@ -171,7 +173,7 @@ void SceneBuilder::world_end(const SourceLoc& loc) {
   in_world_ = false;
   objects_.clear();
   std::unique_ptr<Scene> scene = std::move(scene_);
-  if (!frame_skipped_) {
+  if (!frame_skipped_ && !diag_.aborted()) {
     ++frames_ready_;
     if (callbacks_.frame_ready) callbacks_.frame_ready(std::move(*scene));
   }
@@ -353,6 +355,7 @@ void SceneBuilder::hider(const std::string& type, const ParamList&, const Source
 
 void SceneBuilder::ignored_request(const std::string& request, const std::vector<double>& numbers,
                                    const std::vector<std::string>&, const SourceLoc& loc) {
+  // ErrorHandler: the parser has applied it to the Diagnostics.
   static const char* silent[] = {"Shutter", "ShadingRate", "ShadingInterpolation", "Bound", "ErrorHandler",
                                  "ArchiveRecord", "Displacement", "RelativeDetail", "Detail", "DetailRange",
                                  "ColorSamples", "PixelVariance", "GeometricApproximation"};

@@ -30,6 +30,7 @@ class SceneBuilder : public RiTarget {
   // "print"); Diagnostics::frame_errors() holds what the frame's image must record. After the
   // callback the frame's errors are closed (Diagnostics::end_frame). frame_failed is called for
   // a frame whose world block never closes (the input ends inside it): nothing is rendered.
+  // Under ErrorHandler "abort" no frame is handed over once an error arrived.
   struct Callbacks {
     std::function<bool(int frame_number)> frame_selected;  // may be empty: all frames
     std::function<void(Scene&&)> frame_ready;

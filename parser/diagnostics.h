@@ -1,10 +1,11 @@
 // Collects warnings and errors from the parser and the scene builder. Messages are formatted
 // "file:line:col: error: Request: message" and handed to a sink (by default: printed to stderr)
-// as they arrive. Counting is exact; showing is capped per kind and in total (message_budget.h),
-// and only the shown diagnostics are kept, so a file with millions of errors costs counters,
-// not millions of messages.
+// as they arrive, as the RI ErrorHandler in effect says (error_handler.h). Counting is exact;
+// showing is capped per kind and in total (message_budget.h), and only the shown diagnostics are
+// kept, so a file with millions of errors costs counters, not millions of messages.
 #pragma once
 
+#include "parser/error_handler.h"
 #include "parser/message_budget.h"
 #include "parser/source_loc.h"
 
@@ -54,10 +55,20 @@ class Diagnostics {
   void warning_once(const std::string& key, const SourceLoc& loc, const std::string& request,
                     const std::string& message);
 
+  // The RI ErrorHandler in effect; "print" until set.
+  ErrorHandler handler() const { return handler_; }
+  // Sets the handler from here on; refused (false) after fix_handler.
+  bool set_handler(ErrorHandler handler);
+  // Sets the handler for the rest of the run (--strict): later set_handler calls are refused.
+  void fix_handler(ErrorHandler handler);
+  // An error arrived under "abort": the run stops (the parser reads no further request, and no
+  // frame is handed over).
+  bool aborted() const { return aborted_; }
+
   // Every error and warning reported, shown or not.
   std::int64_t error_count() const { return errors_; }
   std::int64_t warning_count() const { return warnings_; }
-  // The diagnostics within the caps, in the order they arrived (the ones the sink was given).
+  // The diagnostics the sink was given (not ignored, within the caps), in order.
   const std::vector<Diagnostic>& all() const { return all_; }
   // The errors since the previous end_frame() (shown or not).
   const FrameErrors& frame_errors() const { return frame_errors_; }
@@ -70,6 +81,9 @@ class Diagnostics {
  private:
   void emit(Diagnostic d, MessageBudget& budget);
   Sink sink_;
+  ErrorHandler handler_ = ErrorHandler::Print;
+  bool handler_fixed_ = false;
+  bool aborted_ = false;
   std::int64_t errors_ = 0;
   std::int64_t warnings_ = 0;
   FrameErrors frame_errors_;

@@ -1,7 +1,8 @@
-// End-to-end: the error policy (RI ErrorHandler "print", the default). A request with an error
-// is reported with its position and skipped, its frame is rendered from the rest and records
-// the errors in its image (darc:errors, darc:first_error), the run exits 3; printing is capped;
-// --skip-existing renders a frame that recorded errors again.
+// End-to-end: the error policy. Under RI ErrorHandler "print" (the default) a request with an
+// error is reported with its position and skipped, its frame is rendered from the rest and
+// records the errors in its image (darc:errors, darc:first_error), the run exits 3; printing is
+// capped; --skip-existing renders a frame that recorded errors again. "abort" and --strict stop
+// at the first error and write nothing for its frame; "ignore" prints nothing.
 #include "render/render_test_util.h"
 
 #include <chrono>
@@ -71,8 +72,7 @@ TEST(CliErrorPolicy, ErrorInsideTheWorldSkipsOnlyItsRequest) {
   const std::optional<OIIO::ImageSpec> header = read_image_header(dir / "out.exr");
   ASSERT_TRUE(header);
   EXPECT_EQ(header->get_int_attribute("darc:errors"), 1);
-  EXPECT_EQ(header->get_string_attribute("darc:first_error"),
-            "scene.rib:7:3: error: Basis: unknown basis \"bsline\"");
+  EXPECT_EQ(header->get_string_attribute("darc:first_error"), "scene.rib:7:3: error: Basis: unknown basis \"bsline\"");
 }
 
 TEST(CliErrorPolicy, AHundredThousandRepeatsPrintTheCapAndOneSummaryAndCountExactly) {
@@ -112,6 +112,57 @@ TEST(CliErrorPolicy, SkipExistingRendersAFrameWithErrorsAgainAndKeepsACleanOne) 
   EXPECT_NE(fs::last_write_time(dir / "f2.exr"), old_time) << "the frame with errors is rendered again";
   EXPECT_NE(r.err.find("f2.exr exists but records errors: frame 2 rendered again"), std::string::npos) << r.err;
   EXPECT_EQ(read_image_header(dir / "f2.exr")->find_attribute("darc:errors"), nullptr);
+}
+
+// `prefix` (one line) and three tiny frames (14 lines each) f1..f3; frame 2 has a bad Projection
+// (line 5 of its frame).
+std::string three_frames_with_an_error_in_frame_two(const std::string& prefix) {
+  return prefix + tiny_frame_rib(1, "f#.exr") + replaced(tiny_frame_rib(2, "f#.exr"), "[40]", "[200]") +
+         tiny_frame_rib(3, "f#.exr");
+}
+
+TEST(CliErrorPolicy, AbortStopsAtTheFirstErrorAndWritesNothingForItsFrame) {
+  ScratchDir dir("policy-abort");
+  write_file(dir / "scene.rib", three_frames_with_an_error_in_frame_two("ErrorHandler \"abort\"\n"));
+  RunResult r = run_darc(dir.path(), "scene.rib");
+  EXPECT_EQ(r.exit_code, kExitSceneError) << r.err;
+  EXPECT_NE(r.err.find("error: Projection: fov must be in"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("darc: stopped at the first error (ErrorHandler \"abort\")"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "f1.exr")) << "frame 1 was finished before the error";
+  EXPECT_FALSE(fs::exists(dir / "f2.exr")) << "nothing is written for the frame with the error";
+  EXPECT_FALSE(fs::exists(dir / "f3.exr")) << "the run stops";
+  EXPECT_FALSE(has_temp_files(dir.path()));
+}
+
+TEST(CliErrorPolicy, StrictIsAbortAndOverridesTheRib) {
+  ScratchDir dir("policy-strict");
+  write_file(dir / "scene.rib", three_frames_with_an_error_in_frame_two("ErrorHandler \"ignore\"\n"));
+  RunResult r = run_darc(dir.path(), "--strict scene.rib");
+  EXPECT_EQ(r.exit_code, kExitSceneError) << r.err;
+  EXPECT_NE(r.err.find("error: Projection: fov must be in"), std::string::npos) << "--strict overrides \"ignore\"";
+  EXPECT_NE(r.err.find("darc: stopped at the first error (--strict)"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "f1.exr"));
+  EXPECT_FALSE(fs::exists(dir / "f2.exr"));
+  EXPECT_FALSE(fs::exists(dir / "f3.exr"));
+}
+
+TEST(CliErrorPolicy, IgnorePrintsNothingButStillCountsAndRecords) {
+  ScratchDir dir("policy-ignore");
+  write_file(dir / "scene.rib", three_frames_with_an_error_in_frame_two("ErrorHandler \"ignore\"\n"));
+  RunResult r = run_darc(dir.path(), "scene.rib");
+  EXPECT_EQ(r.exit_code, kExitSceneError) << "an ignored error still fails the run";
+  EXPECT_EQ(r.err, "") << "nothing on stderr";
+  const std::optional<OIIO::ImageSpec> f2 = read_image_header(dir / "f2.exr");
+  ASSERT_TRUE(f2);
+  EXPECT_EQ(f2->get_int_attribute("darc:errors"), 1);
+  EXPECT_EQ(f2->get_string_attribute("darc:first_error"),
+            "scene.rib:" + std::to_string(1 + 14 + 5) + ":1: error: Projection: fov must be in (0, 180) degrees, found "
+            "200.000000");
+  for (const char* clean : {"f1.exr", "f3.exr"}) {
+    const std::optional<OIIO::ImageSpec> h = read_image_header(dir / clean);
+    ASSERT_TRUE(h) << clean;
+    EXPECT_EQ(h->find_attribute("darc:errors"), nullptr) << clean;
+  }
 }
 
 }  // namespace

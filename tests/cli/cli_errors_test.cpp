@@ -51,7 +51,8 @@ TEST(Cli, HelpListsTheOptionsAndExitsZero) {
   ScratchDir dir("help");
   RunResult r = run_darc(dir.path(), "--help");
   EXPECT_EQ(r.exit_code, kExitOk) << r.err;
-  for (const char* option : {"--output", "--res", "--hider", "--frames", "--skip-existing", "--stats", "--seed"})
+  for (const char* option :
+       {"--output", "--res", "--hider", "--frames", "--skip-existing", "--strict", "--stats", "--seed"})
     EXPECT_NE(r.out.find(option), std::string::npos) << "--help does not mention " << option;
 }
 

@@ -77,9 +77,32 @@ WorldEnd
 )");
   ASSERT_EQ(b.scenes.size(), 1u);
   EXPECT_EQ(b.frame_errors[0].count, 3) << "ObjectBegin, TransformBegin and AttributeBegin";
-  EXPECT_EQ(b.frame_errors[0].first, "test.rib:7:1: error: WorldEnd: ObjectBegin at test.rib:6:1 is still open: closed here");
+  EXPECT_EQ(b.frame_errors[0].first,
+            "test.rib:7:1: error: WorldEnd: ObjectBegin at test.rib:6:1 is still open: closed here");
   EXPECT_TRUE(b.scenes[0].spheres.empty()) << "the sphere inside the object is recorded, not drawn";
   EXPECT_TRUE(b.failed.empty());
+}
+
+TEST(SceneBuilderErrors, ErrorHandlerIsNotGraphicsStateAndHoldsPastFrameEnd) {
+  Built b = build(R"(FrameBegin 1 ErrorHandler "ignore" WorldBegin WorldEnd FrameEnd
+FrameBegin 2 WorldBegin Sides 3 Sphere 1 -1 1 360 WorldEnd FrameEnd
+)");
+  ASSERT_EQ(b.scenes.size(), 2u);
+  EXPECT_TRUE(b.diagnostics.empty()) << "\"ignore\" set in frame 1 still holds in frame 2";
+  EXPECT_EQ(b.frame_errors[1].count, 1) << "and the error is still the frame's";
+}
+
+TEST(SceneBuilderErrors, UnderAbortNoFrameIsHandedOverAfterTheFirstError) {
+  Built b = build(R"(ErrorHandler "abort"
+FrameBegin 1 WorldBegin Sphere 1 -1 1 360 WorldEnd FrameEnd
+FrameBegin 2 WorldBegin Sides 3 Sphere 1 -1 1 360 WorldEnd FrameEnd
+FrameBegin 3 WorldBegin Sphere 1 -1 1 360 WorldEnd FrameEnd
+)");
+  ASSERT_EQ(b.scenes.size(), 1u) << "frame 1 was done before the error";
+  EXPECT_EQ(b.scenes[0].output.frame_number, 1);
+  EXPECT_TRUE(b.failed.empty()) << "the blocks left open by the stop are no new errors";
+  ASSERT_EQ(b.diagnostics.size(), 1u);
+  EXPECT_EQ(b.diagnostics[0].str(), "test.rib:3:25: error: Sides: Sides must be 1 or 2, found 3");
 }
 
 }  // namespace
