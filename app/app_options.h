@@ -21,6 +21,7 @@ struct AppOptions {
   std::optional<float> contribution_threshold;  // --contribution-threshold (unset: the default)
   std::optional<FrameList> frames;
   bool skip_existing = false;
+  bool strict = false;              // --strict: ErrorHandler "abort" for the whole run, whatever the RIB says
   std::string stats_path;
   uint32_t seed = 0;
   bool quiet = false;

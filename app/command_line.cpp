@@ -59,7 +59,11 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
       ->check(CLI::Range(0.0f, 1.0f));
   std::string frames;
   app.add_option("--frames", frames, "frames to render, e.g. 1-10,15,20-40x5");
-  app.add_flag("--skip-existing", o.skip_existing, "skip frames whose output file already exists");
+  app.add_flag("--skip-existing", o.skip_existing,
+               "skip frames whose output file already exists (and records no errors)");
+  app.add_flag("--strict", o.strict,
+               "stop at the first scene error and write nothing for its frame (ErrorHandler \"abort\", "
+               "overriding the RIB's ErrorHandler)");
   app.add_option("--stats", o.stats_path, "write per-frame timings and counters as JSON");
   app.add_option("--seed", o.seed, "random seed");
   app.add_flag("-q,--quiet", o.quiet, "no progress output");

@@ -10,7 +10,6 @@
 #include "parser/rib_parser.h"
 #include "parser/rib_writer.h"
 
-#include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -19,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <set>
 
 namespace darc {
@@ -28,10 +28,15 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-// --skip-existing: a frame counts as done when its file exists and its header opens.
-bool image_file_is_readable(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  return in != nullptr;
+// --skip-existing: a frame counts as done when its file exists, its header opens and it records
+// no errors (a frame rendered without some of its requests is rendered again).
+enum class ExistingFrame { Missing, Done, HasErrors };
+
+ExistingFrame existing_frame(const std::string& path) {
+  if (!fs::exists(path)) return ExistingFrame::Missing;
+  const std::optional<std::int64_t> errors = read_recorded_error_count(path);
+  if (!errors) return ExistingFrame::Missing;  // unreadable: render it again
+  return *errors > 0 ? ExistingFrame::HasErrors : ExistingFrame::Done;
 }
 
 // The caps on printed messages (message_budget.h) are summed up once, after everything else.
@@ -93,6 +98,7 @@ nlohmann::json memory_json(const Scene& scene) {
 
 int run_render_session(const AppOptions& o) {
   Diagnostics diag;
+  if (o.strict) diag.fix_handler(ErrorHandler::Abort);
   for (const std::string& in : o.inputs) {
     if (in == "-") continue;
     std::error_code ec;
@@ -111,7 +117,10 @@ int run_render_session(const AppOptions& o) {
   if (o.cat) {
     RibWriter writer(std::cout);
     RibParser parser(writer, diag);
-    for (const std::string& in : o.inputs) parser.parse_file(in);
+    for (const std::string& in : o.inputs) {
+      if (diag.aborted()) break;
+      parser.parse_file(in);
+    }
     print_suppression_summary(diag);
     return diag.error_count() > 0 ? kExitSceneError : kExitOk;
   }
@@ -141,11 +150,17 @@ int run_render_session(const AppOptions& o) {
     FrameStats stats;
     stats.parse_seconds = seconds_since(segment_start);
     const std::string path = output_path(o, scene.output);
-    if (o.skip_existing && fs::exists(path) && image_file_is_readable(path)) {
-      if (!o.quiet)
-        std::fprintf(stderr, "darc: %s exists: frame %d skipped\n", path.c_str(), scene.output.frame_number);
-      segment_start = Clock::now();
-      return;
+    if (o.skip_existing) {
+      const ExistingFrame existing = existing_frame(path);
+      if (existing == ExistingFrame::Done) {
+        if (!o.quiet)
+          std::fprintf(stderr, "darc: %s exists: frame %d skipped\n", path.c_str(), scene.output.frame_number);
+        segment_start = Clock::now();
+        return;
+      }
+      if (existing == ExistingFrame::HasErrors && !o.quiet)
+        std::fprintf(stderr, "darc: %s exists but records errors: frame %d rendered again\n", path.c_str(),
+                     scene.output.frame_number);
     }
     if (written.count(path))
       std::fprintf(stderr, "darc: warning: frame %d overwrites %s (use '#' or %%04d in the name)\n",
@@ -169,6 +184,9 @@ int run_render_session(const AppOptions& o) {
     meta.hider = to_string(o.hider);
     meta.samples_per_pixel = int(scene.output.pixel_samples[0] * scene.output.pixel_samples[1]);
     meta.render_seconds = float(stats.render_seconds);
+    const FrameErrors& frame_errors = diag.frame_errors();  // the requests this frame was rendered without
+    meta.error_count = frame_errors.count;
+    meta.first_error = frame_errors.first;
     WriteResult wr = write_image(path, image, meta, colors, scene.output.display_mode);
     for (const std::string& w : wr.warnings) std::fprintf(stderr, "darc: warning: %s: %s\n", path.c_str(), w.c_str());
     if (wr.nonfinite_replaced > 0)
@@ -179,7 +197,11 @@ int run_render_session(const AppOptions& o) {
       io_error = true;
     } else {
       written.insert(path);
-      if (!o.quiet) std::fprintf(stderr, "darc: wrote %s\n", path.c_str());
+      if (!o.quiet && frame_errors.count > 0)
+        std::fprintf(stderr, "darc: wrote %s with %lld scene errors (recorded as %s in it)\n", path.c_str(),
+                     static_cast<long long>(frame_errors.count), kErrorCountAttribute);
+      else if (!o.quiet)
+        std::fprintf(stderr, "darc: wrote %s\n", path.c_str());
     }
     if (!o.preview.empty()) {
       std::string pv = substitute_frame_number(o.preview, scene.output.frame_number);
@@ -211,9 +233,12 @@ int run_render_session(const AppOptions& o) {
   SceneBuilder builder(diag, cb, overrides);
   RibParser parser(builder, diag);
   for (const std::string& in : o.inputs) {
+    if (diag.aborted()) break;
     parser.parse_file(in);
   }
   builder.finish(SourceLoc{});
+  if (diag.aborted())
+    std::fprintf(stderr, "darc: stopped at the first error (%s)\n", o.strict ? "--strict" : "ErrorHandler \"abort\"");
   if (o.frames && frames_seen == 0)
     std::fprintf(stderr, "darc: warning: --frames selected none of the frames in the input\n");
   print_suppression_summary(diag);

@@ -45,6 +45,8 @@ void SceneBuilder::pop_block(Block b, const char* request, const SourceLoc&) {
 }
 
 void SceneBuilder::finish(const SourceLoc& end) {
+  // After ErrorHandler "abort" the input was cut short on purpose: what is open is no new error.
+  if (diag_.aborted()) return;
   while (!blocks_.empty()) {
     diag_.error(block_locs_.back(), block_name(int(blocks_.back())), "block is never closed");
     Block b = blocks_.back();
@@ -69,7 +71,6 @@ void SceneBuilder::frame_begin(int number, const SourceLoc& loc) {
   in_frame_ = true;
   frame_number_ = number;
   has_frame_number_ = true;
-  errors_at_frame_start_ = diag_.error_count();
   frame_skipped_ = callbacks_.frame_selected && !callbacks_.frame_selected(number);
 }
 
@@ -95,7 +96,6 @@ void SceneBuilder::world_begin(const SourceLoc& loc) {
   if (!in_frame_) {
     // Without FrameBegin, frames are numbered by world block, from 1.
     frame_number_ = world_blocks_seen_;
-    errors_at_frame_start_ = diag_.error_count();
     frame_skipped_ = callbacks_.frame_selected && !callbacks_.frame_selected(frame_number_);
   }
   saved_attributes_.push_back(attributes_);
@@ -149,7 +149,24 @@ void SceneBuilder::start_scene() {
   next_strand_id_ = 0;
 }
 
+void SceneBuilder::close_blocks_left_open_in_world(const SourceLoc& loc) {
+  if (!in_world_) return;  // pop_block reports the unmatched WorldEnd
+  while (!blocks_.empty() && blocks_.back() != Block::World) {
+    const Block open = blocks_.back();
+    diag_.error(loc, "WorldEnd",
+                std::string(block_name(int(open))) + " at " + block_locs_.back().str() + " is still open: closed here");
+    if (open == Block::Object) {
+      object_end(loc);
+    } else if (open == Block::Attribute) {
+      attribute_end(loc);
+    } else {
+      transform_end(loc);
+    }
+  }
+}
+
 void SceneBuilder::world_end(const SourceLoc& loc) {
+  close_blocks_left_open_in_world(loc);
   pop_block(Block::World, "WorldEnd", loc);
   attributes_ = saved_attributes_.back();
   saved_attributes_.pop_back();
@@ -158,17 +175,11 @@ void SceneBuilder::world_end(const SourceLoc& loc) {
   in_world_ = false;
   objects_.clear();
   std::unique_ptr<Scene> scene = std::move(scene_);
-  if (frame_skipped_) return;
-  if (diag_.error_count() > errors_at_frame_start_) {
-    diag_.error(loc, "WorldEnd",
-                "frame " + std::to_string(frame_number_) + " not rendered: the scene has errors");
-    ++frames_failed_;
-    if (callbacks_.frame_failed) callbacks_.frame_failed(frame_number_);
-  } else {
+  if (!frame_skipped_ && !diag_.aborted()) {
     ++frames_ready_;
     if (callbacks_.frame_ready) callbacks_.frame_ready(std::move(*scene));
   }
-  if (!in_frame_) errors_at_frame_start_ = diag_.error_count();
+  diag_.end_frame();
 }
 
 void SceneBuilder::attribute_begin(const SourceLoc& loc) {
@@ -255,9 +266,10 @@ void SceneBuilder::crop_window(double x0, double x1, double y0, double y1, const
 void SceneBuilder::projection(const std::string& name, const ParamList& params, const SourceLoc& loc) {
   if (!option_allowed("Projection", loc)) return;
   if (name == "perspective") {
-    options_.projection = Camera::Projection::Perspective;
+    // Checked before anything changes: a request with an error is skipped as a whole.
     double fov = params.get_float("fov", 90.0f);
     if (!(fov > 0 && fov < 180)) throw RibError("fov must be in (0, 180) degrees, found " + std::to_string(fov));
+    options_.projection = Camera::Projection::Perspective;
     options_.fov_degrees = fov;
   } else if (name == "orthographic") {
     options_.projection = Camera::Projection::Orthographic;
@@ -345,6 +357,7 @@ void SceneBuilder::hider(const std::string& type, const ParamList&, const Source
 
 void SceneBuilder::ignored_request(const std::string& request, const std::vector<double>& numbers,
                                    const std::vector<std::string>&, const SourceLoc& loc) {
+  // ErrorHandler: the parser has applied it to the Diagnostics.
   static const char* silent[] = {"Shutter", "ShadingRate", "ShadingInterpolation", "Bound", "ErrorHandler",
                                  "ArchiveRecord", "Displacement", "RelativeDetail", "Detail", "DetailRange",
                                  "ColorSamples", "PixelVariance", "GeometricApproximation"};
@@ -543,51 +556,6 @@ void SceneBuilder::basis(const BasisArg& u, int ustep, const BasisArg& v, int vs
   CurveBasis ub = resolve(u, ustep), vb = resolve(v, vstep);
   attributes_.ubasis = ub;
   attributes_.vbasis = vb;
-}
-
-// ---------------------------------------------------------------- instancing
-
-bool SceneBuilder::skip_motion_sample() { return in_motion_ && motion_samples_seen_++ > 0; }
-
-bool SceneBuilder::record(std::function<void(SceneBuilder&)> call) {
-  if (!recording_) return false;
-  recording_->push_back(std::move(call));
-  return true;
-}
-
-void SceneBuilder::object_begin(const std::string& handle, const SourceLoc& loc) {
-  if (recording_) throw RibError("ObjectBegin cannot nest");
-  push_block(Block::Object, loc);
-  recording_ = &objects_[handle];
-  recording_->clear();
-}
-
-void SceneBuilder::object_end(const SourceLoc& loc) {
-  pop_block(Block::Object, "ObjectEnd", loc);
-  recording_ = nullptr;
-}
-
-void SceneBuilder::object_instance(const std::string& handle, const SourceLoc& loc) {
-  if (record([=](SceneBuilder& b) { b.object_instance(handle, loc); })) return;
-  auto it = objects_.find(handle);
-  if (it == objects_.end()) throw RibError("unknown object handle \"" + handle + "\"");
-  if (replaying_) throw RibError("ObjectInstance inside an object is not supported");
-  replaying_ = true;
-  // The object's requests run in their own attribute scope, with the current attributes.
-  Attributes saved_attr = attributes_;
-  Matrix4 saved_ctm = ctm_;
-  size_t depth = blocks_.size();
-  try {
-    for (auto& call : it->second) call(*this);
-  } catch (...) {
-    replaying_ = false;
-    throw;
-  }
-  replaying_ = false;
-  blocks_.resize(std::min(blocks_.size(), depth));
-  block_locs_.resize(blocks_.size());
-  attributes_ = saved_attr;
-  ctm_ = saved_ctm;
 }
 
 }  // namespace darc

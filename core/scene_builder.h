@@ -25,8 +25,12 @@ struct FrameOverrides {
 
 class SceneBuilder : public RiTarget {
  public:
-  // Called at each WorldEnd whose frame had no errors. frame_failed is called for frames with
-  // errors (nothing must be written for them).
+  // frame_ready is called at each WorldEnd of a selected frame, errors or not: a request with an
+  // error was reported and skipped, and the frame is built from the rest (RI ErrorHandler
+  // "print"); Diagnostics::frame_errors() holds what the frame's image must record. After the
+  // callback the frame's errors are closed (Diagnostics::end_frame). frame_failed is called for
+  // a frame whose world block never closes (the input ends inside it): nothing is rendered.
+  // Under ErrorHandler "abort" no frame is handed over once an error arrived.
   struct Callbacks {
     std::function<bool(int frame_number)> frame_selected;  // may be empty: all frames
     std::function<void(Scene&&)> frame_ready;
@@ -117,6 +121,9 @@ class SceneBuilder : public RiTarget {
 
   void push_block(Block b, const SourceLoc& loc);
   void pop_block(Block b, const char* request, const SourceLoc& loc);
+  // WorldEnd with AttributeBegin, TransformBegin or ObjectBegin blocks still open: each is an
+  // error and is closed here, so that one missing AttributeEnd does not lose the frame.
+  void close_blocks_left_open_in_world(const SourceLoc& loc);
   void set_ctm(const Matrix4& m);
   void concat(const Matrix4& m);
   bool in_world() const { return in_world_; }
@@ -166,7 +173,6 @@ class SceneBuilder : public RiTarget {
   int frame_number_ = 0;
   bool has_frame_number_ = false;
   int world_blocks_seen_ = 0;
-  int errors_at_frame_start_ = 0;
   int frames_ready_ = 0, frames_failed_ = 0;
 
   std::unique_ptr<Scene> scene_;  // the frame being built (inside the world block)

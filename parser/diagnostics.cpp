@@ -15,7 +15,20 @@ std::string Diagnostic::str() const {
 Diagnostics::Diagnostics()
     : sink_([](const Diagnostic& d) { std::fprintf(stderr, "%s\n", d.str().c_str()); }) {}
 
+bool Diagnostics::set_handler(ErrorHandler handler) {
+  if (handler_fixed_) return false;
+  handler_ = handler;
+  return true;
+}
+
+void Diagnostics::fix_handler(ErrorHandler handler) {
+  handler_ = handler;
+  handler_fixed_ = true;
+}
+
 void Diagnostics::emit(Diagnostic d, MessageBudget& budget) {
+  // Ignored messages are not shown, so they take nothing from the caps.
+  if (handler_ == ErrorHandler::Ignore) return;
   if (!budget.admit(message_kind(d.request, d.message))) return;
   if (sink_) sink_(d);
   all_.push_back(std::move(d));
@@ -23,7 +36,10 @@ void Diagnostics::emit(Diagnostic d, MessageBudget& budget) {
 
 void Diagnostics::error(const SourceLoc& loc, const std::string& request, const std::string& message) {
   ++errors_;
-  emit({Severity::Error, loc, request, message}, error_budget_);
+  Diagnostic d{Severity::Error, loc, request, message};
+  if (frame_errors_.count++ == 0) frame_errors_.first = d.str();
+  emit(std::move(d), error_budget_);
+  if (handler_ == ErrorHandler::Abort) aborted_ = true;
 }
 
 void Diagnostics::warning(const SourceLoc& loc, const std::string& request, const std::string& message) {

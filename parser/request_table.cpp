@@ -373,7 +373,6 @@ Table make_table() {
       {"DetailRange", ignored},
       {"GeometricApproximation", ignored},
       {"TextureCoordinates", ignored},
-      {"ErrorHandler", ignored},
       {"DepthOfField", ignored},
       {"MotionBegin", ignored},
       {"MotionEnd", ignored},

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
+#include "parser/error_handler.h"
 #include "parser/lexer.h"
 #include "parser/request_table.h"
 
@@ -79,6 +81,7 @@ void RibParser::parse_text(std::string text, const std::string& name) {
 void RibParser::parse_requests(Lexer& lexer) {
   RequestReader args(lexer, declared_, diag_);
   while (true) {
+    if (diag_.aborted()) return;  // ErrorHandler "abort": nothing after the first error is read
     const Token& token = lexer.peek();
     if (token.kind == TokenKind::End) return;
     if (token.kind == TokenKind::Error) {
@@ -119,6 +122,7 @@ void RibParser::dispatch(const std::string& request, RequestReader& args, const 
   if (request == "ReadArchive") return read_archive(args);
   if (request == "Declare") return declare(args, loc);
   if (request == "Option") return option(args, loc);
+  if (request == "ErrorHandler") return error_handler(args, loc);
   if (RequestHandler handler = find_request_handler(request)) {
     RequestContext context{args, target_, loc, request};
     return handler(context);
@@ -160,6 +164,24 @@ void RibParser::option(RequestReader& args, const SourceLoc& loc) {
     }
   }
   target_.option(category, params, loc);
+}
+
+void RibParser::error_handler(RequestReader& args, const SourceLoc& loc) {
+  const std::string name = args.string("the handler name");
+  args.expect_request_end("ErrorHandler");
+  // The target sees it as a request without effect on the image (RibWriter writes it back).
+  target_.ignored_request("ErrorHandler", {}, {name}, loc);
+  const std::optional<ErrorHandler> handler = error_handler_named(name);
+  if (!handler) {
+    diag_.warning(loc, "ErrorHandler",
+                  fmt::format("unknown handler \"{}\" (expected ignore, print or abort): keeping \"{}\"", name,
+                              to_string(diag_.handler())));
+    return;
+  }
+  if (!diag_.set_handler(*handler))
+    diag_.warning_once("ErrorHandler fixed", loc, "ErrorHandler",
+                       fmt::format("ErrorHandler \"{}\" ignored: the command line fixed the handler to \"{}\"", name,
+                                   to_string(diag_.handler())));
 }
 
 std::string RibParser::resolve_archive(const std::string& name) const {

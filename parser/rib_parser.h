@@ -2,7 +2,8 @@
 // an RiTarget and reports every error and warning with its file:line:column to Diagnostics,
 // recovering at the next request so that one run reports all errors. ReadArchive is inlined
 // here (the target never sees it), searching the including file's directory and then
-// Option "searchpath" "archive".
+// Option "searchpath" "archive". ErrorHandler is applied here, to the Diagnostics, from the
+// next request on (error_handler.h); under "abort" parsing stops at the first error.
 #pragma once
 
 #include <string>
@@ -43,6 +44,7 @@ class RibParser {
   void read_archive(RequestReader& args);
   void declare(RequestReader& args, const SourceLoc& loc);
   void option(RequestReader& args, const SourceLoc& loc);
+  void error_handler(RequestReader& args, const SourceLoc& loc);
   std::string resolve_archive(const std::string& name) const;
 
   RiTarget& target_;

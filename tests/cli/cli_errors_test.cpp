@@ -1,6 +1,6 @@
 // End-to-end: the darc command's exit codes and error reports (DESIGN.md "Command-line
-// contract": 0 ok, 1 render or I/O error, 2 usage error, 3 scene error), and that a failed frame
-// leaves nothing on disk while the other frames of the run are still written.
+// contract": 0 ok, 1 render or I/O error, 2 usage error, 3 scene error), and that a scene error
+// skips its request while its frame is still written, recording the error, and the run exits 3.
 #include "render/render_test_util.h"
 
 #include <nlohmann/json.hpp>
@@ -51,11 +51,12 @@ TEST(Cli, HelpListsTheOptionsAndExitsZero) {
   ScratchDir dir("help");
   RunResult r = run_darc(dir.path(), "--help");
   EXPECT_EQ(r.exit_code, kExitOk) << r.err;
-  for (const char* option : {"--output", "--res", "--hider", "--frames", "--skip-existing", "--stats", "--seed"})
+  for (const char* option :
+       {"--output", "--res", "--hider", "--frames", "--skip-existing", "--strict", "--stats", "--seed"})
     EXPECT_NE(r.out.find(option), std::string::npos) << "--help does not mention " << option;
 }
 
-TEST(Cli, MalformedRibExitsThreeWithFileLineColumnAndWritesNothing) {
+TEST(Cli, MalformedRibExitsThreeWithFileLineColumnAndWritesTheFrameWithoutTheRequest) {
   ScratchDir dir("malformed");
   // Line 4: the bracket opened at column 15 is never closed before the next request.
   write_file(dir / "bad.rib",
@@ -67,10 +68,15 @@ TEST(Cli, MalformedRibExitsThreeWithFileLineColumnAndWritesNothing) {
   RunResult r = run_darc(dir.path(), "bad.rib");
   EXPECT_EQ(r.exit_code, kExitSceneError) << r.err;
   EXPECT_NE(r.err.find("bad.rib:4:15:"), std::string::npos) << r.err;
-  EXPECT_TRUE(only_inputs_and_logs(dir.path(), {"bad.rib"})) << "no image and no temporary file for a failed frame";
+  EXPECT_TRUE(only_inputs_and_logs(dir.path(), {"bad.rib", "bad.exr"})) << "the image and no temporary file";
+  const std::optional<OIIO::ImageSpec> header = read_image_header(dir / "bad.exr");
+  ASSERT_TRUE(header);
+  EXPECT_EQ(header->get_int_attribute("darc:errors"), 1);
+  const std::string first = header->get_string_attribute("darc:first_error");
+  EXPECT_EQ(first.rfind("bad.rib:4:15: error: Sphere: ", 0), 0u) << first;
 }
 
-TEST(Cli, ErrorInFrameTwoOfThreeStillWritesFramesOneAndThree) {
+TEST(Cli, ErrorInFrameTwoOfThreeIsRecordedInFrameTwoOnly) {
   ScratchDir dir("frame-error");
   // Frame 2's curve has 2 vertices where "cubic" [4] needs 4: a validation error at line 2 of
   // that frame's world block.
@@ -81,15 +87,21 @@ TEST(Cli, ErrorInFrameTwoOfThreeStillWritesFramesOneAndThree) {
   RunResult r = run_darc(dir.path(), "--stats stats.json three.rib");
   EXPECT_EQ(r.exit_code, kExitSceneError) << r.err;
   EXPECT_TRUE(std::regex_search(r.err, std::regex(R"(three\.rib:[0-9]+:[0-9]+: error: Curves)"))) << r.err;
-  EXPECT_TRUE(fs::exists(dir / "f1.exr"));
-  EXPECT_FALSE(fs::exists(dir / "f2.exr")) << "the failed frame must not be written";
-  EXPECT_TRUE(fs::exists(dir / "f3.exr"));
+  const std::optional<OIIO::ImageSpec> f1 = read_image_header(dir / "f1.exr");
+  const std::optional<OIIO::ImageSpec> f2 = read_image_header(dir / "f2.exr");
+  const std::optional<OIIO::ImageSpec> f3 = read_image_header(dir / "f3.exr");
+  ASSERT_TRUE(f1 && f2 && f3) << "every frame is written, frame 2 without its bad curve";
+  EXPECT_EQ(f2->get_int_attribute("darc:errors"), 1);
+  const std::string first = f2->get_string_attribute("darc:first_error");
+  EXPECT_TRUE(std::regex_search(first, std::regex(R"(^three\.rib:[0-9]+:[0-9]+: error: Curves: )"))) << first;
+  for (const OIIO::ImageSpec* clean : {&*f1, &*f3}) {
+    EXPECT_EQ(clean->find_attribute("darc:errors"), nullptr) << "a frame without errors records none";
+    EXPECT_EQ(clean->find_attribute("darc:first_error"), nullptr);
+  }
   EXPECT_FALSE(has_temp_files(dir.path()));
-  // The stats list the frames that were rendered, and only those.
   nlohmann::json stats = nlohmann::json::parse(read_text_file(dir / "stats.json"));
-  ASSERT_EQ(stats["frames"].size(), 2u);
-  EXPECT_EQ(stats["frames"][0]["frame"], 1);
-  EXPECT_EQ(stats["frames"][1]["frame"], 3);
+  ASSERT_EQ(stats["frames"].size(), 3u);
+  EXPECT_EQ(stats["frames"][1]["frame"], 2);
 }
 
 TEST(Cli, UnwritableOutputExitsOneAndLeavesNoTemporaryFile) {

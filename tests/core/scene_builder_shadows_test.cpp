@@ -60,7 +60,9 @@ TEST(SceneBuilderShadows, EmptyOrMissingShadownameCastsNone) {
 
 TEST(SceneBuilderShadows, ShadownameMustBeAString) {
   Built b = build("WorldBegin\nLightSource \"spotlight\" 1 \"float shadowname\" [1]\nWorldEnd\n");
-  EXPECT_EQ(b.failed, std::vector<int>{1});
+  ASSERT_EQ(b.scenes.size(), 1u) << "the frame is built without the bad request";
+  EXPECT_TRUE(b.scenes[0].lights.empty());
+  EXPECT_EQ(b.frame_errors[0].count, 1);
   const std::vector<Diagnostic> e = reported(b, Severity::Error, "\"shadowname\" must be a string");
   ASSERT_EQ(e.size(), 1u);
   EXPECT_EQ(e[0].loc.line, 2);
@@ -94,7 +96,8 @@ Attribute "light" "shadows" [1]
 LightSource "pointlight" 1
 WorldEnd
 )");
-  EXPECT_EQ(b.failed, std::vector<int>{1});
+  EXPECT_EQ(shadows(b), std::vector<bool>{false}) << "the frame is built; the bad values changed nothing";
+  EXPECT_EQ(b.frame_errors[0].count, 2);
   std::vector<Diagnostic> e = reported(b, Severity::Error, "Attribute \"light\" \"shadows\" must be");
   ASSERT_EQ(e.size(), 2u);
   EXPECT_EQ(e[0].message, "Attribute \"light\" \"shadows\" must be \"on\" or \"off\", found \"yes\"");
@@ -201,7 +204,8 @@ Attribute "visibility" "int transmission" [2]
 Attribute "render" "casts_shadows" [1]
 WorldEnd
 )");
-  EXPECT_EQ(b.failed, std::vector<int>{1});
+  ASSERT_EQ(b.scenes.size(), 1u) << "the frame is built without the bad requests";
+  EXPECT_EQ(b.frame_errors[0].count, 4);
   std::vector<Diagnostic> e;
   for (const Diagnostic& d : b.diagnostics)
     if (d.severity == Severity::Error && d.request == "Attribute") e.push_back(d);
@@ -305,7 +309,8 @@ WorldBegin WorldEnd
   EXPECT_EQ(e[0].loc.line, 1);
   EXPECT_EQ(e[1].loc.line, 2);
   EXPECT_EQ(e[2].message, "Option \"trace\" \"maxdepth\" must be one integer");
-  ASSERT_EQ(b.scenes.size(), 1u) << "errors before WorldBegin, outside a frame, fail no frame";
+  ASSERT_EQ(b.scenes.size(), 1u) << "errors before WorldBegin are the frame's, and it is built";
+  EXPECT_EQ(b.frame_errors[0].count, 3);
   EXPECT_EQ(b.scenes[0].output.trace_max_depth, 10) << "a rejected value changes nothing";
 }
 

@@ -61,14 +61,21 @@ TEST(SceneBuilder, FrameSelectionSkipsBuilding) {
   EXPECT_EQ(b.scenes[0].output.frame_number, 2);
 }
 
-TEST(SceneBuilder, ErrorsFailOnlyTheirFrame) {
+TEST(SceneBuilder, ErrorsSkipTheirRequestAndCountOnlyForTheirFrame) {
   Built b = build(R"(FrameBegin 1 WorldBegin Sphere 1 -1 1 360 WorldEnd FrameEnd
-FrameBegin 2 WorldBegin Curves "cubic" [5] "nonperiodic" "P" [0 0 0 1 1 1 2 2 2 3 3 3 4 4 4] WorldEnd FrameEnd
+FrameBegin 2 WorldBegin Curves "cubic" [5] "nonperiodic" "P" [0 0 0 1 1 1 2 2 2 3 3 3 4 4 4] Sphere 1 -1 1 360 WorldEnd FrameEnd
 FrameBegin 3 WorldBegin Sphere 1 -1 1 360 WorldEnd FrameEnd)");
-  ASSERT_EQ(b.scenes.size(), 2u);
-  EXPECT_EQ(b.scenes[0].output.frame_number, 1);
-  EXPECT_EQ(b.scenes[1].output.frame_number, 3);
-  ASSERT_EQ(b.failed, std::vector<int>{2});
+  ASSERT_EQ(b.scenes.size(), 3u) << "a frame with an error is still built, without the bad request";
+  EXPECT_TRUE(b.failed.empty());
+  EXPECT_EQ(b.scenes[1].output.frame_number, 2);
+  EXPECT_EQ(b.scenes[1].curves.size(), 0u);
+  EXPECT_EQ(b.scenes[1].spheres.size(), 1u) << "the requests after the bad one are built";
+  ASSERT_EQ(b.frame_errors.size(), 3u);
+  EXPECT_EQ(b.frame_errors[0].count, 0);
+  EXPECT_EQ(b.frame_errors[1].count, 1);
+  EXPECT_EQ(b.frame_errors[1].first.rfind("test.rib:2:", 0), 0u) << b.frame_errors[1].first;
+  EXPECT_EQ(b.frame_errors[2].count, 0) << "frame 2's error is not frame 3's";
+  EXPECT_EQ(b.frame_errors[2].first, "");
   bool located = false;
   for (const Diagnostic& d : b.diagnostics)
     if (d.severity == Severity::Error && d.loc.line == 2) located = true;
@@ -137,11 +144,25 @@ WorldEnd)");
 }
 
 TEST(SceneBuilder, UnbalancedBlocksAreErrors) {
+  // A block left open at WorldEnd is an error, closed there: the frame is built.
   Built b = build("WorldBegin AttributeBegin Sphere 1 -1 1 360 WorldEnd");
-  EXPECT_TRUE(b.scenes.empty());
+  ASSERT_EQ(b.scenes.size(), 1u);
+  EXPECT_EQ(b.scenes[0].spheres.size(), 1u);
+  ASSERT_EQ(b.frame_errors.size(), 1u);
+  EXPECT_EQ(b.frame_errors[0].count, 1);
+  EXPECT_EQ(b.frame_errors[0].first,
+            "test.rib:1:45: error: WorldEnd: AttributeBegin at test.rib:1:12 is still open: closed here");
+  // A world block the input never closes is not rendered (RI renders at WorldEnd).
+  Built unclosed = build("WorldBegin Sphere 1 -1 1 360");
+  EXPECT_TRUE(unclosed.scenes.empty());
+  EXPECT_EQ(unclosed.failed, std::vector<int>{1});
   bool error = false;
-  for (const Diagnostic& d : b.diagnostics) error |= d.severity == Severity::Error;
+  for (const Diagnostic& d : unclosed.diagnostics) error |= d.severity == Severity::Error;
   EXPECT_TRUE(error);
+  // Closing blocks that were never opened: each is an error, the rest builds.
+  Built extra = build("WorldBegin AttributeEnd TransformEnd Sphere 1 -1 1 360 WorldEnd");
+  ASSERT_EQ(extra.scenes.size(), 1u);
+  EXPECT_EQ(extra.frame_errors[0].count, 2);
 }
 
 }  // namespace

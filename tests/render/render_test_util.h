@@ -2,6 +2,7 @@
 #pragma once
 
 #include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imageio.h>
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -142,6 +144,13 @@ inline bool read_image(const fs::path& p, Pixels& out) {
   out.channels = s.nchannels;
   out.v.resize(size_t(s.width) * s.height * s.nchannels);
   return buf.get_pixels(OIIO::ROI(0, s.width, 0, s.height, 0, 1, 0, s.nchannels), OIIO::TypeDesc::FLOAT, out.v.data());
+}
+
+// The header (size, channels, metadata) of an image file; nullopt when it does not open.
+inline std::optional<OIIO::ImageSpec> read_image_header(const fs::path& p) {
+  auto in = OIIO::ImageInput::open(p.string());
+  if (!in) return std::nullopt;
+  return in->spec();
 }
 
 }  // namespace darc::test
