@@ -1,8 +1,10 @@
 #include "app/render_session.h"
 
+#include "app/memory_limit.h"
 #include "app/process_memory.h"
 
 #include "app/progress_reporter.h"
+#include "core/frame_memory.h"
 #include "core/scene_builder.h"
 #include "integrator/color_config.h"
 #include "integrator/image_writer.h"
@@ -13,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -92,6 +95,32 @@ nlohmann::json memory_json(const Scene& scene) {
           {"accelerator_bytes", accel_bytes},
           {"bytes_per_segment", segments ? double(curve_bytes + accel_bytes) / double(segments) : 0.0},
           {"peak_resident_bytes", peak_resident_bytes()}};
+}
+
+// The part of the memory limit a frame's geometry may take (SceneBuilder checks its estimate):
+// what the process may hold, less what it holds now and twice the largest input file (the parser
+// holds a file's text while its frames are built; a gzip file's text is larger than the file,
+// which the factor of two roughly covers).
+void set_frame_memory_limit(const AppOptions& o, FrameOverrides& overrides) {
+  MemoryLimit limit;
+  if (o.memory_limit_bytes) {
+    if (*o.memory_limit_bytes == 0) return;  // --memory-limit none
+    limit = MemoryLimit{*o.memory_limit_bytes, "--memory-limit"};
+  } else if (std::optional<MemoryLimit> system = memory_limit(this_process_memory_inputs())) {
+    limit = *system;
+    limit.source += "; --memory-limit changes it";
+  } else {
+    return;
+  }
+  const MemoryLimitInputs now = this_process_memory_inputs();
+  uint64_t text = 0;
+  for (const std::string& in : o.inputs) {
+    std::error_code ec;
+    if (in != "-") text = std::max<uint64_t>(text, fs::file_size(in, ec) * (ec ? 0 : 1));
+  }
+  const uint64_t held = now.process_resident + 2 * text;
+  overrides.memory_limit_bytes = limit.bytes > held ? limit.bytes - held : 1;
+  overrides.memory_limit_source = "the limit is " + format_bytes(limit.bytes) + ", from " + limit.source;
 }
 
 }  // namespace
@@ -230,6 +259,7 @@ int run_render_session(const AppOptions& o) {
   overrides.xres = o.xres;
   overrides.yres = o.yres;
   overrides.pixel_samples = o.pixel_samples;
+  set_frame_memory_limit(o, overrides);
   SceneBuilder builder(diag, cb, overrides);
   RibParser parser(builder, diag);
   for (const std::string& in : o.inputs) {

@@ -106,6 +106,8 @@ void SceneBuilder::world_begin(const SourceLoc& loc) {
 
 void SceneBuilder::start_scene() {
   scene_ = std::make_unique<Scene>();
+  frame_memory_estimate_ = 0;
+  frame_over_memory_ = false;
   material_ids_.clear();
   Scene& s = *scene_;
   OutputSettings out = options_.output;
@@ -175,7 +177,10 @@ void SceneBuilder::world_end(const SourceLoc& loc) {
   in_world_ = false;
   objects_.clear();
   std::unique_ptr<Scene> scene = std::move(scene_);
-  if (!frame_skipped_ && !diag_.aborted()) {
+  if (frame_over_memory_ && !frame_skipped_) {
+    ++frames_failed_;
+    if (callbacks_.frame_failed) callbacks_.frame_failed(frame_number_);
+  } else if (!frame_skipped_ && !diag_.aborted()) {
     ++frames_ready_;
     if (callbacks_.frame_ready) callbacks_.frame_ready(std::move(*scene));
   }

@@ -21,6 +21,11 @@ struct FrameOverrides {
   int xres = 0, yres = 0;             // --res (0: keep Format)
   double pixel_samples = 0;           // --pixel-samples (0: keep PixelSamples)
   std::string output;                 // -o (empty: keep Display name)
+  // The memory a frame's geometry may take (core/frame_memory.h estimates it request by request);
+  // a frame over it fails with an error naming the request that crossed it and is not rendered.
+  // 0: no limit. The source says where the limit comes from, for the message.
+  uint64_t memory_limit_bytes = 0;
+  std::string memory_limit_source;
 };
 
 class SceneBuilder : public RiTarget {
@@ -129,6 +134,10 @@ class SceneBuilder : public RiTarget {
   bool in_world() const { return in_world_; }
   // False while skipping an unselected frame or recording an object: geometry is not built.
   bool building_geometry(const char* request, const SourceLoc& loc);
+  // Adds a geometry request's memory estimate to the frame's (FrameOverrides::memory_limit_bytes).
+  // Throws RibError at the request that takes the frame over the limit; false for the frame's
+  // later geometry, which is no longer built.
+  bool reserve_frame_memory(uint64_t curve_segments, uint64_t surfaces, uint64_t polygon_points);
   // Options may only change outside the world block.
   bool option_allowed(const char* request, const SourceLoc& loc);
   uint32_t make_material(const SourceLoc& loc);
@@ -176,6 +185,8 @@ class SceneBuilder : public RiTarget {
   int frames_ready_ = 0, frames_failed_ = 0;
 
   std::unique_ptr<Scene> scene_;  // the frame being built (inside the world block)
+  uint64_t frame_memory_estimate_ = 0;  // core/frame_memory.h, of the geometry built so far
+  bool frame_over_memory_ = false;      // the frame went over memory_limit_bytes: not rendered
   // The attribute state a material was made from (make_material interns materials by it). The
   // key holds its parameter lists, so that an address is never reused by another list while it
   // is a key.

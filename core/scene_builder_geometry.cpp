@@ -2,6 +2,7 @@
 // shapes of the scene being built (the graphics state itself lives in scene_builder.cpp).
 #include "core/curve_builder.h"
 #include "core/curve_set.h"
+#include "core/frame_memory.h"
 #include "core/scene_builder.h"
 
 #include <algorithm>
@@ -14,6 +15,21 @@ namespace darc {
 bool SceneBuilder::building_geometry(const char* request, const SourceLoc& loc) {
   if (!in_world_) throw RibError(std::string(request) + " outside WorldBegin/WorldEnd");
   return !frame_skipped_ && scene_ != nullptr && (void(loc), true);
+}
+
+bool SceneBuilder::reserve_frame_memory(uint64_t curve_segments, uint64_t surfaces, uint64_t polygon_points) {
+  if (frame_over_memory_) return false;
+  if (overrides_.memory_limit_bytes == 0) return true;
+  frame_memory_estimate_ += frame_memory_estimate(curve_segments, surfaces, polygon_points);
+  if (frame_memory_estimate_ <= overrides_.memory_limit_bytes) return true;
+  frame_over_memory_ = true;
+  // (The parser prefixes the message with the request's name and position.)
+  throw RibError("the frame's geometry would need about " +
+                 format_bytes(frame_memory_estimate_) + " with this request, more than the " +
+                 format_bytes(overrides_.memory_limit_bytes) + " a frame may use (" +
+                 (overrides_.memory_limit_source.empty() ? std::string("--memory-limit")
+                                                         : overrides_.memory_limit_source) +
+                 "); the frame is not rendered");
 }
 
 uint32_t SceneBuilder::make_material(const SourceLoc&) {
@@ -110,6 +126,11 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
   in.default_cs = attributes_.color;
   in.default_os = attributes_.opacity;
   in.object_to_world = ctm_;
+  const CurvesTopology topology{in.cubic, in.periodic, in.basis.step, in.nvertices};
+  validate_topology(topology);
+  uint64_t segments = 0;
+  for (int nv : in.nvertices) segments += segments_in_curve(topology, nv);
+  if (!reserve_frame_memory(segments, 0, 0)) return;
   uint32_t material = make_material(loc);
   append_curves(scene_->curves, in, material, next_strand_id_);
 }
@@ -120,6 +141,7 @@ void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetam
   if (skip_motion_sample()) return;
   if (!building_geometry("Sphere", loc)) return;
   if (radius == 0 || thetamax == 0) return;  // empty surface
+  if (!reserve_frame_memory(0, 1, 0)) return;
   scene_->spheres.push_back(Sphere::make(radius, zmin, zmax, thetamax, ctm_));
   scene_->sphere_material.push_back(make_material(loc));
 }
@@ -175,6 +197,7 @@ void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const s
                                 const std::vector<int>& indices, const ParamList& params, const char* request,
                                 const SourceLoc& loc) {
   if (!building_geometry(request, loc)) return;
+  if (!reserve_frame_memory(0, nloops_per_face.size(), indices.size())) return;
   std::vector<float> P = read_points(params, request);
   std::vector<Vec3f> world(P.size() / 3);
   for (size_t i = 0; i < world.size(); ++i) world[i] = to_world(&P[3 * i]);

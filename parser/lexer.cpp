@@ -314,6 +314,22 @@ bool read_rib_text(const std::string& path, std::string& text, std::string& erro
     error = std::strerror(errno);
     return false;
   }
+  // Read into a buffer of the file's size: the text is the largest thing a big scene's parse
+  // holds besides its geometry, and a growing buffer would hold up to twice it for a moment.
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec) {
+    text.resize(static_cast<size_t>(size));
+    in.read(text.data(), static_cast<std::streamsize>(size));
+    const bool whole = in.gcount() == static_cast<std::streamsize>(size);
+    text.resize(static_cast<size_t>(in.gcount()));
+    // A file that grew while it was read: the rest too.
+    if (whole && !in.bad()) text.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (in.bad()) {
+      error = "read error";
+      return false;
+    }
+    return true;
+  }
   std::ostringstream contents;
   contents << in.rdbuf();
   if (in.bad()) {
