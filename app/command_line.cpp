@@ -72,12 +72,16 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
   app.add_flag("--cat", o.cat, "print the parsed RIB (canonical form) instead of rendering");
   app.add_option("--ocio-config", o.ocio_config,
                  "OpenColorIO config for 8-bit outputs (default: $OCIO, else built in)");
+  bool no_archive_cache = false;
+  app.add_flag("--no-archive-cache", no_archive_cache,
+               "read and parse every ReadArchive again instead of replaying the archive parsed the first time");
   std::string memory_limit;
   app.add_option("--memory-limit", memory_limit,
                  "memory darc may use, e.g. 8G or 500M, or none (default: what the machine, the cgroup and "
                  "ulimit allow); a frame that would need more fails with an error instead of being killed");
   try {
     app.parse(argc, argv);
+    o.archive_cache = !no_archive_cache;
     if (memory_limit == "none") o.memory_limit_bytes = 0;
     else if (!memory_limit.empty()) {
       o.memory_limit_bytes = parse_byte_size(memory_limit);

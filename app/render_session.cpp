@@ -4,6 +4,7 @@
 #include "app/process_memory.h"
 
 #include "app/progress_reporter.h"
+#include "core/acceleration_reuse.h"
 #include "core/frame_memory.h"
 #include "core/scene_builder.h"
 #include "integrator/color_config.h"
@@ -166,6 +167,7 @@ int run_render_session(const AppOptions& o) {
   std::set<std::string> written;
   Clock::time_point segment_start = Clock::now();
 
+  AccelerationReuse acceleration;  // a frame with the previous one's geometry keeps its BVH
   SceneBuilder::Callbacks cb;
   int frames_seen = 0;  // frames --frames selected (rendered, skipped as existing or failed)
   if (o.frames)
@@ -195,7 +197,7 @@ int run_render_session(const AppOptions& o) {
       std::fprintf(stderr, "darc: warning: frame %d overwrites %s (use '#' or %%04d in the name)\n",
                    scene.output.frame_number, path.c_str());
     Clock::time_point t0 = Clock::now();
-    scene.build_acceleration();
+    const bool reused = acceleration.build(scene);
     stats.build_seconds = seconds_since(t0);
 
     RenderOptions ro;
@@ -247,6 +249,7 @@ int run_render_session(const AppOptions& o) {
                             {"pixel_samples", {scene.output.pixel_samples[0], scene.output.pixel_samples[1]}},
                             {"curve_segments", scene.curves.size()},
                             {"accelerator", to_string(scene.accel.kind())},
+                            {"accelerator_reused", reused},
                             {"memory", memory_json(scene)},
                             {"parse_seconds", stats.parse_seconds},
                             {"build_seconds", stats.build_seconds},
@@ -262,6 +265,8 @@ int run_render_session(const AppOptions& o) {
   set_frame_memory_limit(o, overrides);
   SceneBuilder builder(diag, cb, overrides);
   RibParser parser(builder, diag);
+  ArchiveCache archives;
+  if (o.archive_cache) parser.use_archive_cache(&archives);
   for (const std::string& in : o.inputs) {
     if (diag.aborted()) break;
     parser.parse_file(in);
@@ -275,7 +280,13 @@ int run_render_session(const AppOptions& o) {
 
   if (!o.stats_path.empty()) {
     std::ofstream f(o.stats_path);
-    f << nlohmann::json{{"software", std::string("darc ") + DARC_VERSION}, {"frames", stats_frames}}.dump(2) << "\n";
+    f << nlohmann::json{{"software", std::string("darc ") + DARC_VERSION},
+                        {"archive_cache", {{"enabled", o.archive_cache},
+                                           {"archives_parsed", archives.parses()},
+                                           {"archives_replayed", archives.replays()}}},
+                        {"frames", stats_frames}}
+             .dump(2)
+      << "\n";
     if (!f) {
       std::fprintf(stderr, "darc: error: cannot write %s\n", o.stats_path.c_str());
       io_error = true;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace darc {
 
@@ -108,6 +109,8 @@ void SceneBuilder::start_scene() {
   scene_ = std::make_unique<Scene>();
   frame_memory_estimate_ = 0;
   frame_over_memory_ = false;
+  geometry_key_.clear();
+  geometry_key_valid_ = true;
   material_ids_.clear();
   Scene& s = *scene_;
   OutputSettings out = options_.output;
@@ -177,6 +180,14 @@ void SceneBuilder::world_end(const SourceLoc& loc) {
   in_world_ = false;
   objects_.clear();
   std::unique_ptr<Scene> scene = std::move(scene_);
+  if (scene && !frame_skipped_) {
+    if (geometry_key_valid_ && !geometry_key_.empty()) scene->geometry_key = std::move(geometry_key_);
+    // Curves of replayed calls this frame did not use are not kept for the next one.
+    for (auto it = curve_chunks_.begin(); it != curve_chunks_.end();) {
+      if (!std::exchange(it->second.used, false)) it = curve_chunks_.erase(it);
+      else ++it;
+    }
+  }
   if (frame_over_memory_ && !frame_skipped_) {
     ++frames_failed_;
     if (callbacks_.frame_failed) callbacks_.frame_failed(frame_number_);

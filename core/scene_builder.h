@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 namespace darc {
@@ -51,6 +52,7 @@ class SceneBuilder : public RiTarget {
   void finish(const SourceLoc& end);
 
   // RiTarget
+  void replayed_request(uint64_t id) override { replayed_id_ = id; }
   void version(double, const SourceLoc&) override {}
   void declare(const std::string&, const std::string&, const SourceLoc&) override {}
   void option(const std::string& category, const ParamList& params, const SourceLoc& loc) override;
@@ -138,6 +140,11 @@ class SceneBuilder : public RiTarget {
   // Throws RibError at the request that takes the frame over the limit; false for the frame's
   // later geometry, which is no longer built.
   bool reserve_frame_memory(uint64_t curve_segments, uint64_t surfaces, uint64_t polygon_points);
+  // The id of the cached-archive call being replayed (RiTarget::replayed_request), 0 for any other.
+  uint64_t replayed_id() const;
+  // Adds a geometry request to the frame's geometry key (Scene::geometry_key); a request that
+  // is not a replayed one leaves the frame without a key.
+  void note_geometry(uint64_t id);
   // Options may only change outside the world block.
   bool option_allowed(const char* request, const SourceLoc& loc);
   uint32_t make_material(const SourceLoc& loc);
@@ -187,6 +194,21 @@ class SceneBuilder : public RiTarget {
   std::unique_ptr<Scene> scene_;  // the frame being built (inside the world block)
   uint64_t frame_memory_estimate_ = 0;  // core/frame_memory.h, of the geometry built so far
   bool frame_over_memory_ = false;      // the frame went over memory_limit_bytes: not rendered
+  // Archive reuse (parser/archive_cache.h): the id of the replayed call being made, the curves
+  // built from each replayed Curves call with what they depend on besides the call itself
+  // (kept from one frame to the next while used), and the frame's geometry key.
+  uint64_t replayed_id_ = 0;
+  struct CurveChunk {
+    Matrix4 ctm;
+    CurveBasis basis;
+    Vec3f color, opacity;
+    CurveSet segments;  // strand ids from 0
+    uint32_t strands = 0;
+    bool used = false;  // this frame
+  };
+  std::unordered_map<uint64_t, CurveChunk> curve_chunks_;
+  std::string geometry_key_;
+  bool geometry_key_valid_ = true;
   // The attribute state a material was made from (make_material interns materials by it). The
   // key holds its parameter lists, so that an address is never reused by another list while it
   // is a key.

@@ -32,6 +32,26 @@ bool SceneBuilder::reserve_frame_memory(uint64_t curve_segments, uint64_t surfac
                  "); the frame is not rendered");
 }
 
+uint64_t SceneBuilder::replayed_id() const {
+  // Calls replayed from an ObjectBegin block share the ObjectInstance's id: not one request.
+  return replaying_ ? 0 : replayed_id_;
+}
+
+void SceneBuilder::note_geometry(uint64_t id) {
+  if (id == 0) {
+    geometry_key_valid_ = false;
+    return;
+  }
+  // The request and the transform it is built with (the basis too, for curves: it is in the
+  // key through the attribute state, whose changes are requests of their own in the same archive
+  // or before it; the transform alone can move without a request of the archive changing).
+  geometry_key_.append(reinterpret_cast<const char*>(&id), sizeof id);
+  geometry_key_.append(reinterpret_cast<const char*>(&ctm_.m), sizeof ctm_.m);
+  const CurveBasis& b = attributes_.vbasis;
+  geometry_key_.append(reinterpret_cast<const char*>(&b.m), sizeof b.m);
+  geometry_key_.append(reinterpret_cast<const char*>(&b.step), sizeof b.step);
+}
+
 uint32_t SceneBuilder::make_material(const SourceLoc&) {
   // One material per distinct attribute state, not per primitive request (an exporter writing one
   // Curves call per strand would otherwise make, and shade with, thousands of equal materials).
@@ -108,6 +128,24 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
     throw RibError("curve type must be \"linear\" or \"cubic\", found \"" + type + "\"");
   if (wrap != "periodic" && wrap != "nonperiodic")
     throw RibError("wrap must be \"periodic\" or \"nonperiodic\", found \"" + wrap + "\"");
+  // A Curves call replayed from a cached archive with the transform, basis and colours of the
+  // last time it was built: its segments are copied (bitwise the same as building them again).
+  const uint64_t id = replayed_id();
+  note_geometry(id);
+  if (id != 0) {
+    auto it = curve_chunks_.find(id);
+    if (it != curve_chunks_.end()) {
+      CurveChunk& chunk = it->second;
+      if (chunk.ctm == ctm_ && chunk.basis.m == attributes_.vbasis.m && chunk.basis.step == attributes_.vbasis.step &&
+          chunk.color == attributes_.color && chunk.opacity == attributes_.opacity) {
+        if (!reserve_frame_memory(chunk.segments.size(), 0, 0)) return;
+        chunk.used = true;
+        scene_->curves.append(chunk.segments, make_material(loc), next_strand_id_);
+        next_strand_id_ += chunk.strands;
+        return;
+      }
+    }
+  }
   CurvesInput in;
   in.cubic = type == "cubic";
   in.periodic = wrap == "periodic";
@@ -132,7 +170,16 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
   for (int nv : in.nvertices) segments += segments_in_curve(topology, nv);
   if (!reserve_frame_memory(segments, 0, 0)) return;
   uint32_t material = make_material(loc);
-  append_curves(scene_->curves, in, material, next_strand_id_);
+  if (id == 0) {
+    append_curves(scene_->curves, in, material, next_strand_id_);
+    return;
+  }
+  CurveChunk chunk{ctm_, attributes_.vbasis, attributes_.color, attributes_.opacity, CurveSet{}, 0, true};
+  append_curves(chunk.segments, in, material, chunk.strands);
+  chunk.segments.shrink_to_fit();
+  scene_->curves.append(chunk.segments, material, next_strand_id_);
+  next_strand_id_ += chunk.strands;
+  curve_chunks_.insert_or_assign(id, std::move(chunk));
 }
 
 void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
@@ -140,6 +187,7 @@ void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetam
   if (record([=](SceneBuilder& b) { b.sphere(radius, zmin, zmax, thetamax, params, loc); })) return;
   if (skip_motion_sample()) return;
   if (!building_geometry("Sphere", loc)) return;
+  note_geometry(replayed_id());
   if (radius == 0 || thetamax == 0) return;  // empty surface
   if (!reserve_frame_memory(0, 1, 0)) return;
   scene_->spheres.push_back(Sphere::make(radius, zmin, zmax, thetamax, ctm_));
@@ -197,6 +245,7 @@ void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const s
                                 const std::vector<int>& indices, const ParamList& params, const char* request,
                                 const SourceLoc& loc) {
   if (!building_geometry(request, loc)) return;
+  note_geometry(replayed_id());
   if (!reserve_frame_memory(0, nloops_per_face.size(), indices.size())) return;
   std::vector<float> P = read_points(params, request);
   std::vector<Vec3f> world(P.size() / 3);

@@ -11,6 +11,7 @@
 #include "parser/source_loc.h"
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,11 @@ struct BasisArg {
 class RiTarget {
  public:
   virtual ~RiTarget() = default;
+
+  // The parser calls this before each call it replays from its archive cache with a number
+  // unique, for the run, to that recorded call, and with 0 after it: the same number means the
+  // same request with the same arguments, so a target may reuse what it built from it before.
+  virtual void replayed_request(uint64_t id) { (void)id; }
 
   virtual void version(double v, const SourceLoc& loc) = 0;
   virtual void declare(const std::string& name, const std::string& declaration, const SourceLoc& loc) = 0;

@@ -203,11 +203,7 @@ void RibParser::read_archive(RequestReader& args) {
   args.expect_request_end("ReadArchive");
   if (!archive_files_allowed_) throw RibError(fmt::format("cannot open archive \"{}\": file access is disabled", name));
   const std::string path = resolve_archive(name);
-  std::string text;
-  std::string reason;
-  if (!is_readable_file(path) || !read_rib_text(path, text, reason)) {
-    throw RibError(fmt::format("cannot open archive \"{}\"", name));
-  }
+  if (!is_readable_file(path)) throw RibError(fmt::format("cannot open archive \"{}\"", name));
   const std::string canonical = canonical_name(path);
   if (std::find(include_stack_.begin(), include_stack_.end(), canonical) != include_stack_.end()) {
     throw RibError(fmt::format("archive \"{}\" includes itself (cycle through {})", name, canonical));
@@ -215,7 +211,92 @@ void RibParser::read_archive(RequestReader& args) {
   if (include_stack_.size() >= kMaxArchiveDepth) {
     throw RibError(fmt::format("archive \"{}\" is nested deeper than {} levels", name, kMaxArchiveDepth));
   }
+  if (archive_cache_) return include_cached_archive(path, canonical);
+  std::string text;
+  std::string reason;
+  if (!read_rib_text(path, text, reason)) throw RibError(fmt::format("cannot open archive \"{}\"", name));
   parse_text(std::move(text), path);
+}
+
+void RibParser::include_cached_archive(const std::string& path, const std::string& canonical) {
+  std::shared_ptr<const RecordedArchive> archive = archive_cache_->find(canonical, declared_, archive_path_);
+  if (archive) {
+    archive_cache_->count_replay();
+  } else {
+    std::string text;
+    std::string reason;
+    const std::optional<FileStamp> stamp = stamp_file(path);
+    if (!read_rib_text(path, text, reason)) throw RibError(fmt::format("cannot open archive \"{}\"", path));
+    std::optional<RecordedArchive> recorded = record_archive(text, path);
+    if (!recorded) {
+      // Not replayable: parse it as without a cache (the file was read once more for nothing).
+      if (recorded_files_ && stamp) recorded_files_->push_back(*stamp);
+      parse_text(std::move(text), path);
+      return;
+    }
+    archive = archive_cache_->store(canonical, std::move(*recorded));
+  }
+  if (recorded_files_) recorded_files_->insert(recorded_files_->end(), archive->files.begin(), archive->files.end());
+  replay(*archive);
+}
+
+std::optional<RecordedArchive> RibParser::record_archive(std::string text, const std::string& path) {
+  RecordedArchive archive;
+  if (std::optional<FileStamp> stamp = stamp_file(path)) archive.files.push_back(*stamp);
+  archive.declarations_before = declared_;
+  archive.search_path_before = archive_path_;
+  int64_t errors_kept = 0;
+  bool replayable = true;
+  // The archive's own parser: the same state as this one, a target that records, and
+  // diagnostics that are recorded too (shown when replayed, so each frame that reads the
+  // archive gets its errors, as without the cache).
+  Diagnostics recorded_diag([&](const Diagnostic& d) {
+    if (d.severity == Severity::Error) ++errors_kept;
+    archive.events.push_back(RecordedArchive::Event{{}, d});
+  });
+  CallRecorder recorder([&](CallRecorder::Entry call) {
+    if (call.request == "ErrorHandler") replayable = false;  // it changes this parser's diagnostics
+    archive.events.push_back(RecordedArchive::Event{std::move(call), std::nullopt});
+  });
+  RibParser child(recorder, recorded_diag);
+  child.declared_ = declared_;
+  child.archive_path_ = archive_path_;
+  child.include_stack_ = include_stack_;
+  child.archive_files_allowed_ = archive_files_allowed_;
+  child.archive_cache_ = archive_cache_;
+  child.recorded_files_ = &archive.files;
+  child.parse_text(std::move(text), path);
+  // Past the message caps some errors were counted but not recorded: a replay would lose them.
+  if (!replayable || errors_kept != recorded_diag.error_count()) return std::nullopt;
+  archive.declarations_after = std::move(child.declared_);
+  archive.search_path_after = std::move(child.archive_path_);
+  return archive;
+}
+
+void RibParser::replay(const RecordedArchive& archive) {
+  for (size_t i = 0; i < archive.events.size(); ++i) {
+    const RecordedArchive::Event& e = archive.events[i];
+    if (diag_.aborted()) return;
+    if (e.diagnostic) {
+      const Diagnostic& d = *e.diagnostic;
+      if (d.severity == Severity::Error) {
+        diag_.error(d.loc, d.request, d.message);
+      } else {
+        // Warnings once per run, as when the archive is parsed each time with one Diagnostics.
+        diag_.warning_once("archive " + d.loc.str() + " " + d.message, d.loc, d.request, d.message);
+      }
+      continue;
+    }
+    target_.replayed_request(archive.request_id(i));
+    try {
+      e.call.call(target_);
+    } catch (const RibError& err) {
+      diag_.error(e.call.loc, e.call.request, err.what());
+    }
+    target_.replayed_request(0);
+  }
+  declared_ = archive.declarations_after;
+  archive_path_ = archive.search_path_after;
 }
 
 }  // namespace darc

@@ -6,10 +6,12 @@
 // next request on (error_handler.h); under "abort" parsing stops at the first error.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "parser/archive_cache.h"
 #include "parser/diagnostics.h"
 #include "parser/request_reader.h"
 #include "parser/ri_target.h"
@@ -36,6 +38,11 @@ class RibParser {
   // and no file is looked up or opened: for input that must not reach the file system (fuzzing).
   void allow_archive_files(bool allowed) { archive_files_allowed_ = allowed; }
 
+  // Parse each archive once and replay it from `cache` at later ReadArchives of it (nullptr,
+  // the default: every ReadArchive reads and parses its file). The cache must outlive the parser;
+  // one cache serves every parser of a run.
+  void use_archive_cache(ArchiveCache* cache) { archive_cache_ = cache; }
+
  private:
   void parse_text(std::string text, const std::string& name);
   void parse_requests(Lexer& lexer);
@@ -46,6 +53,13 @@ class RibParser {
   void option(RequestReader& args, const SourceLoc& loc);
   void error_handler(RequestReader& args, const SourceLoc& loc);
   std::string resolve_archive(const std::string& name) const;
+  // ReadArchive through the cache: replays the file's entry, or parses the file into one (or,
+  // for an archive whose parse cannot be replayed, parses it straight into the target).
+  void include_cached_archive(const std::string& path, const std::string& canonical);
+  // Parses `text` of the archive `path` into a recording; nullopt when the recording could not
+  // reproduce the parse (an ErrorHandler inside, or more errors than were shown).
+  std::optional<RecordedArchive> record_archive(std::string text, const std::string& path);
+  void replay(const RecordedArchive& archive);
 
   RiTarget& target_;
   Diagnostics& diag_;
@@ -53,6 +67,9 @@ class RibParser {
   std::vector<std::string> archive_path_;
   std::vector<std::string> include_stack_;  // files being read, outermost first (canonical paths)
   bool archive_files_allowed_ = true;
+  ArchiveCache* archive_cache_ = nullptr;
+  // While this parser records an archive for the cache: the files the recording depends on.
+  std::vector<FileStamp>* recorded_files_ = nullptr;
 };
 
 }  // namespace darc
