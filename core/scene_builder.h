@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -149,6 +150,9 @@ class SceneBuilder : public RiTarget {
   void set_transmission(Transmission t, bool asks_for_shader_opacity, const SourceLoc& loc);
   // Whether a light being declared casts ray-traced shadows ("shadowname", Attribute "light").
   bool light_casts_shadows(const std::string& handle, const ParamList& params, const SourceLoc& loc);
+  // Attribute "Ri" (scene_builder_ri_attribute.cpp): RenderMan 21+ spellings of RI requests as
+  // attributes; "Basis" and "BasisStep" set the curve basis as Basis does.
+  void ri_attribute(const ParamList& params, const SourceLoc& loc);
   // Inside MotionBegin/MotionEnd only the first sample (the shutter-open one) is applied.
   bool skip_motion_sample();
   // When recording an ObjectBegin block, stores the call and returns true.
@@ -200,6 +204,8 @@ class SceneBuilder : public RiTarget {
   Matrix4 camera_to_world_;
   std::map<std::string, Matrix4> named_spaces_;  // CoordinateSystem, relative to world
   std::map<std::string, uint32_t> light_handles_;
+  // AreaLightSource handles: valid for Illuminate, though area lights light nothing in darc.
+  std::set<std::string> area_light_handles_;
   uint32_t next_strand_id_ = 0;
 
   // ObjectBegin/End: the calls of each object, replayed at ObjectInstance.
