@@ -137,6 +137,7 @@ void SceneBuilder::start_scene() {
   named_spaces_["camera"] = camera_to_world_;
   light_handles_.clear();
   area_light_handles_.clear();
+  skipped_primitives_.clear();
   attributes_.lights_on.clear();
   for (const PendingLight& pl : options_.pre_world_lights) {
     LightDesc d = pl.desc;
@@ -177,6 +178,7 @@ void SceneBuilder::world_end(const SourceLoc& loc) {
   objects_.clear();
   std::unique_ptr<Scene> scene = std::move(scene_);
   if (!frame_skipped_ && !diag_.aborted()) {
+    warn_if_nothing_renderable(*scene, loc);
     ++frames_ready_;
     if (callbacks_.frame_ready) callbacks_.frame_ready(std::move(*scene));
   }

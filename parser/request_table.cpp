@@ -1,6 +1,5 @@
 #include "parser/request_table.h"
 
-#include <algorithm>
 #include <array>
 #include <unordered_map>
 
@@ -394,34 +393,6 @@ RequestHandler find_request_handler(std::string_view name) {
   static const Table table = make_table();  // built once, read-only afterwards
   const auto it = table.find(name);
   return it == table.end() ? nullptr : it->second;
-}
-
-bool is_unsupported_request(std::string_view name) {
-  static constexpr std::array<std::string_view, 24> kUnsupported = {"Cone",
-                                                                    "Cylinder",
-                                                                    "Disk",
-                                                                    "Paraboloid",
-                                                                    "Hyperboloid",
-                                                                    "Torus",
-                                                                    "Patch",
-                                                                    "PatchMesh",
-                                                                    "NuPatch",
-                                                                    "TrimCurve",
-                                                                    "Points",
-                                                                    "SubdivisionMesh",
-                                                                    "Blobby",
-                                                                    "Procedural",
-                                                                    "Geometry",
-                                                                    "SolidBegin",
-                                                                    "SolidEnd",
-                                                                    "MakeLatLongEnvironment",
-                                                                    "MakeCubeFaceEnvironment",
-                                                                    "MakeBump",
-                                                                    "Deformation",
-                                                                    "Resource",
-                                                                    "ResourceBegin",
-                                                                    "ResourceEnd"};
-  return std::find(kUnsupported.begin(), kUnsupported.end(), name) != kUnsupported.end();
 }
 
 }  // namespace darc

@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <memory>
 #include <optional>
 
 #include "parser/error_handler.h"
+#include "parser/known_requests.h"
 #include "parser/lexer.h"
 #include "parser/request_table.h"
 
@@ -20,6 +22,13 @@ namespace fs = std::filesystem;
 // ReadArchive nesting limit: far deeper than any real scene, and stops runaway recursion
 // through distinct files (a cycle through the same file is caught separately).
 constexpr size_t kMaxArchiveDepth = 64;
+
+// PRMan's "archive.zip!member.rib": a member of a zip file.
+bool is_zip_member(const std::string& name) {
+  std::string lower(name);
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return lower.find(".zip!") != std::string::npos;
+}
 
 std::string canonical_name(const std::string& path) {
   std::error_code ec;
@@ -127,9 +136,14 @@ void RibParser::dispatch(const std::string& request, RequestReader& args, const 
     RequestContext context{args, target_, loc, request};
     return handler(context);
   }
-  if (is_unsupported_request(request)) {
+  dispatch_unimplemented(request, args, loc);
+}
+
+void RibParser::dispatch_unimplemented(const std::string& request, RequestReader& args, const SourceLoc& loc) {
+  if (const std::optional<KnownRequest> known = find_known_request(request)) {
     diag_.warning_once("unsupported request " + request, loc, request,
-                       fmt::format("unsupported request \"{}\": skipped", request));
+                       fmt::format("request \"{}\" ({}) is not supported: skipped", request, describe(known->origin)));
+    if (known->kind == RequestKind::Geometry) target_.skipped_primitive(request, loc);
   } else {
     diag_.warning_once("unknown request " + request, loc, request,
                        fmt::format("unknown request \"{}\": skipped", request));
@@ -201,6 +215,8 @@ std::string RibParser::resolve_archive(const std::string& name) const {
 void RibParser::read_archive(RequestReader& args) {
   const std::string name = args.string("the archive name");
   args.expect_request_end("ReadArchive");
+  if (is_zip_member(name))
+    throw RibError(fmt::format("cannot read archive \"{}\": zip archive members are not supported", name));
   if (!archive_files_allowed_) throw RibError(fmt::format("cannot open archive \"{}\": file access is disabled", name));
   const std::string path = resolve_archive(name);
   std::string text;

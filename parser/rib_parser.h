@@ -40,6 +40,9 @@ class RibParser {
   void parse_text(std::string text, const std::string& name);
   void parse_requests(Lexer& lexer);
   void dispatch(const std::string& request, RequestReader& args, const SourceLoc& loc);
+  // A request the table does not have: "not supported" when a RenderMan document has it, else
+  // "unknown"; one warning per name, the arguments skipped.
+  void dispatch_unimplemented(const std::string& request, RequestReader& args, const SourceLoc& loc);
   void skip_to_next_request(Lexer& lexer);
   void read_archive(RequestReader& args);
   void declare(RequestReader& args, const SourceLoc& loc);

@@ -127,6 +127,18 @@ TEST(RibFiles, ArchiveCycleIsAnError) {
   EXPECT_EQ(r->target.named("Sides").size(), 2u);
 }
 
+TEST(RibFiles, ZipArchiveMembersAreAClearError) {
+  TempDir dir;
+  dir.write("assets.zip", "PK");
+  const std::string main = dir.write("main.rib", "ReadArchive \"assets.zip!hair.rib\"\nSides 1\n");
+  auto r = parse_file(main);
+  ASSERT_EQ(r->diag.error_count(), 1);
+  EXPECT_EQ(r->diag.all()[0].message,
+            "cannot read archive \"assets.zip!hair.rib\": zip archive members are not supported");
+  EXPECT_EQ(r->diag.all()[0].loc.line, 1);
+  EXPECT_EQ(r->target.named("Sides").size(), 1u);
+}
+
 TEST(RibFiles, GzipFilesAreDecompressed) {
   TempDir dir;
   const std::string path = (dir.path() / "scene.rib.gz").string();
