@@ -123,13 +123,6 @@ void hider(Ctx& c) {
 
 // --- blocks ---
 
-void frame_begin(Ctx& c) {
-  // The frame number is required by the spec, but some exporters leave it out.
-  const int number = c.args.at_request_end() ? 0 : c.args.integer("the frame number");
-  c.args.expect_request_end("FrameBegin");
-  c.target.frame_begin(number, c.loc);
-}
-
 // Requests without arguments.
 template <void (RiTarget::*Call)(const SourceLoc&)>
 void no_arguments(Ctx& c) {
@@ -188,11 +181,6 @@ void coord_sys_transform(Ctx& c) {
 }
 
 // --- attributes ---
-
-void attribute(Ctx& c) {
-  const std::string category = c.args.string("the attribute category");
-  c.target.attribute(category, c.args.param_list(c.name), c.loc);
-}
 
 void orientation(Ctx& c) {
   const std::string name = c.args.string("the orientation");
@@ -321,7 +309,6 @@ Table make_table() {
       {"Quantize", quantize},
       {"Display", display},
       {"Hider", hider},
-      {"FrameBegin", frame_begin},
       {"FrameEnd", no_arguments<&RiTarget::frame_end>},
       {"WorldBegin", no_arguments<&RiTarget::world_begin>},
       {"WorldEnd", no_arguments<&RiTarget::world_end>},
@@ -338,7 +325,6 @@ Table make_table() {
       {"Perspective", perspective},
       {"CoordinateSystem", coordinate_system},
       {"CoordSysTransform", coord_sys_transform},
-      {"Attribute", attribute},
       {"Orientation", orientation},
       {"ReverseOrientation", no_arguments<&RiTarget::reverse_orientation>},
       {"Sides", sides},

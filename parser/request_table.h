@@ -1,7 +1,8 @@
 // The dispatch table from RIB request names to the functions that read their arguments and
-// call the RiTarget. Requests that need the parser's own state (Declare, Option's search path,
-// ReadArchive) are handled by RibParser itself and are not in this table; known_requests.h lists
-// the requests darc does not implement.
+// call the RiTarget. Requests that need the parser's own state (Declare; Option, Attribute and
+// FrameBegin, which conditions refer to; ReadArchive, ArchiveBegin, IfBegin, ...) are
+// handled by RibParser itself and are not in this table; known_requests.h lists the requests
+// darc does not implement.
 #pragma once
 
 #include <string>
