@@ -141,6 +141,8 @@ void SceneBuilder::start_scene() {
   named_spaces_["world"] = Matrix4{};
   named_spaces_["camera"] = camera_to_world_;
   light_handles_.clear();
+  area_light_handles_.clear();
+  skipped_primitives_.clear();
   attributes_.lights_on.clear();
   for (const PendingLight& pl : options_.pre_world_lights) {
     LightDesc d = pl.desc;
@@ -192,6 +194,7 @@ void SceneBuilder::world_end(const SourceLoc& loc) {
     ++frames_failed_;
     if (callbacks_.frame_failed) callbacks_.frame_failed(frame_number_);
   } else if (!frame_skipped_ && !diag_.aborted()) {
+    warn_if_nothing_renderable(*scene, loc);
     ++frames_ready_;
     if (callbacks_.frame_ready) callbacks_.frame_ready(std::move(*scene));
   }
@@ -465,6 +468,7 @@ void SceneBuilder::attribute(const std::string& category, const ParamList& param
     for (const Param& p : params.params) ray_tracing_attribute(category, p, loc);
     return;
   }
+  if (category == "Ri") return ri_attribute(params, loc);
   // One warning per category: real files repeat vendor attributes on every object.
   diag_.warning_once("attribute:" + category, loc, "Attribute",
                      "Attribute \"" + category + "\" has no effect in darc: ignored");
@@ -531,6 +535,7 @@ void SceneBuilder::add_light(const std::string& name, const std::string& handle,
   scene_->lights.push_back(std::move(d));
   uint32_t idx = uint32_t(scene_->lights.size() - 1);
   light_handles_[handle] = idx;
+  area_light_handles_.erase(handle);  // a handle names the latest light declared with it
   attributes_.lights_on.push_back(idx);
 }
 
@@ -547,12 +552,19 @@ void SceneBuilder::area_light_source(const std::string& name, const std::string&
                      "area lights do not illuminate other objects in darc: their geometry is drawn emissive");
   attributes_.area_light = name;
   attributes_.area_light_params = std::make_shared<const ParamList>(params);
+  light_handles_.erase(handle);  // a handle names the latest light declared with it
+  area_light_handles_.insert(handle);
 }
 
 void SceneBuilder::illuminate(const std::string& handle, bool on, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.illuminate(handle, on, loc); })) return;
   auto it = light_handles_.find(handle);
-  if (it == light_handles_.end()) throw RibError("unknown light handle \"" + handle + "\"");
+  if (it == light_handles_.end()) {
+    // An area light lights nothing here (its geometry is drawn emissive whatever Illuminate
+    // says), so switching it changes nothing; its handle is valid all the same.
+    if (area_light_handles_.count(handle)) return;
+    throw RibError("unknown light handle \"" + handle + "\"");
+  }
   auto& v = attributes_.lights_on;
   auto pos = std::find(v.begin(), v.end(), it->second);
   if (on && pos == v.end()) v.push_back(it->second);

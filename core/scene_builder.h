@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -122,6 +123,7 @@ class SceneBuilder : public RiTarget {
   void points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                                const std::vector<int>& indices, const ParamList& params,
                                const SourceLoc& loc) override;
+  void skipped_primitive(const std::string& request, const SourceLoc& loc) override;
 
  private:
   enum class Block { Frame, World, Attribute, Transform, Object };
@@ -165,6 +167,12 @@ class SceneBuilder : public RiTarget {
   void set_transmission(Transmission t, bool asks_for_shader_opacity, const SourceLoc& loc);
   // Whether a light being declared casts ray-traced shadows ("shadowname", Attribute "light").
   bool light_casts_shadows(const std::string& handle, const ParamList& params, const SourceLoc& loc);
+  // Attribute "Ri" (scene_builder_ri_attribute.cpp): RenderMan 21+ spellings of RI requests as
+  // attributes; "Basis" and "BasisStep" set the curve basis as Basis does.
+  void ri_attribute(const ParamList& params, const SourceLoc& loc);
+  // At WorldEnd (scene_builder_renderable.cpp): one warning when the frame has nothing that can
+  // show up in its image, with the reason.
+  void warn_if_nothing_renderable(const Scene& scene, const SourceLoc& loc);
   // Inside MotionBegin/MotionEnd only the first sample (the shutter-open one) is applied.
   bool skip_motion_sample();
   // When recording an ObjectBegin block, stores the call and returns true.
@@ -233,6 +241,10 @@ class SceneBuilder : public RiTarget {
   Matrix4 camera_to_world_;
   std::map<std::string, Matrix4> named_spaces_;  // CoordinateSystem, relative to world
   std::map<std::string, uint32_t> light_handles_;
+  // AreaLightSource handles: valid for Illuminate, though area lights light nothing in darc.
+  std::set<std::string> area_light_handles_;
+  // This frame's primitive requests that darc does not implement, by request name.
+  std::map<std::string, int> skipped_primitives_;
   uint32_t next_strand_id_ = 0;
 
   // ObjectBegin/End: the calls of each object, replayed at ObjectInstance.

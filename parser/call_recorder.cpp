@@ -13,7 +13,8 @@ void CallRecorder::declare(const std::string& name, const std::string& declarati
 }
 
 void CallRecorder::option(const std::string& category, const ParamList& params, const SourceLoc& loc) {
-  keep("Option", loc, [category, params, loc](RiTarget& t) { t.option(category, params, loc); });
+  auto kept = std::make_shared<const ParamList>(params);
+  sink_(Entry{[category, kept, loc](RiTarget& t) { t.option(category, *kept, loc); }, "Option", loc, category, kept, 0});
 }
 
 void CallRecorder::format(int xres, int yres, double pixel_aspect, const SourceLoc& loc) {
@@ -69,7 +70,7 @@ void CallRecorder::ignored_request(const std::string& request, const std::vector
 }
 
 void CallRecorder::frame_begin(int number, const SourceLoc& loc) {
-  keep("FrameBegin", loc, [number, loc](RiTarget& t) { t.frame_begin(number, loc); });
+  sink_(Entry{[number, loc](RiTarget& t) { t.frame_begin(number, loc); }, "FrameBegin", loc, {}, nullptr, number});
 }
 
 void CallRecorder::frame_end(const SourceLoc& loc) {
@@ -137,7 +138,9 @@ void CallRecorder::coord_sys_transform(const std::string& name, const SourceLoc&
 }
 
 void CallRecorder::attribute(const std::string& category, const ParamList& params, const SourceLoc& loc) {
-  keep("Attribute", loc, [category, params, loc](RiTarget& t) { t.attribute(category, params, loc); });
+  auto kept = std::make_shared<const ParamList>(params);
+  sink_(Entry{[category, kept, loc](RiTarget& t) { t.attribute(category, *kept, loc); }, "Attribute", loc, category,
+              kept, 0});
 }
 
 void CallRecorder::orientation(const std::string& name, const SourceLoc& loc) {
@@ -218,6 +221,10 @@ void CallRecorder::points_polygons(const std::vector<int>& nverts_per_face, cons
 
 void CallRecorder::points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop, const std::vector<int>& indices, const ParamList& params, const SourceLoc& loc) {
   keep("PointsGeneralPolygons", loc, [nloops_per_face, nverts_per_loop, indices, params, loc](RiTarget& t) { t.points_general_polygons(nloops_per_face, nverts_per_loop, indices, params, loc); });
+}
+
+void CallRecorder::skipped_primitive(const std::string& request, const SourceLoc& loc) {
+  keep(request, loc, [request, loc](RiTarget& t) { t.skipped_primitive(request, loc); });
 }
 
 }  // namespace darc

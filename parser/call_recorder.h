@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,11 @@ class CallRecorder : public RiTarget {
     Call call;
     std::string request;
     SourceLoc loc;
+    // For the parser's own view of the state (conditional RIB): Option and Attribute keep their
+    // category and parameters, FrameBegin its number.
+    std::string category;
+    std::shared_ptr<const ParamList> params;
+    int number = 0;
   };
   // Each call is handed to `sink` as it arrives (so that it can be ordered with the diagnostics
   // of the same text).
@@ -88,10 +94,11 @@ class CallRecorder : public RiTarget {
   void points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                                const std::vector<int>& indices, const ParamList& params,
                                const SourceLoc& loc) override;
+  void skipped_primitive(const std::string& request, const SourceLoc& loc) override;
 
  private:
   void keep(std::string request, const SourceLoc& loc, Call call) {
-    sink_(Entry{std::move(call), std::move(request), loc});
+    sink_(Entry{std::move(call), std::move(request), loc, {}, nullptr, 0});
   }
   std::function<void(Entry)> sink_;
 };

@@ -114,6 +114,10 @@ class RiTarget {
   virtual void points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                                        const std::vector<int>& indices, const ParamList& params,
                                        const SourceLoc& loc) = 0;
+  // A geometric primitive request that darc knows but does not implement (Cylinder,
+  // SubdivisionMesh, Procedural2, ...: known_requests.h): the parser has warned and skips its
+  // arguments. It lets a target tell a frame whose every primitive was skipped from an empty one.
+  virtual void skipped_primitive(const std::string& request, const SourceLoc& loc) = 0;
 };
 
 }  // namespace darc

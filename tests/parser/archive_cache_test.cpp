@@ -144,5 +144,29 @@ TEST_F(ArchiveCacheTest, ArchiveWithAnErrorHandlerIsParsedEachTime) {
   EXPECT_EQ(cached->diagnostics.size(), fresh->diagnostics.size()) << "the handler applies as without a cache";
 }
 
+TEST_F(ArchiveCacheTest, ConditionalArchiveIsParsedAtEachReadAndTakesEachFramesBranch) {
+  write("cond.rib", "IfBegin \"$Frame == 2\"\nSphere 2 -2 2 360\nElse\nSphere 1 -1 1 360\nIfEnd\n");
+  const std::string main = "FrameBegin 1\nReadArchive \"cond.rib\"\nFrameEnd\nFrameBegin 2\nReadArchive \"cond.rib\"\nFrameEnd\n";
+  ArchiveCache cache;
+  auto cached = parse(main, &cache);
+  EXPECT_EQ(cache.replays(), 0);
+  const auto spheres = cached->target.named("Sphere");
+  ASSERT_EQ(spheres.size(), 2u);
+  EXPECT_EQ(spheres[0].numbers[0], 1.0);
+  EXPECT_EQ(spheres[1].numbers[0], 2.0);
+  expect_same_calls(*cached, *parse(main, nullptr));
+}
+
+TEST_F(ArchiveCacheTest, AttributesSetByAReplayedArchiveAreSeenByLaterConditions) {
+  write("attr.rib", "Attribute \"user\" \"string look\" [\"wet\"]\n");
+  const std::string main = "WorldBegin\nReadArchive \"attr.rib\"\nAttribute \"user\" \"string look\" [\"dry\"]\n"
+                           "ReadArchive \"attr.rib\"\nIfBegin \"$user:look == 'wet'\"\nSphere 1 -1 1 360\nIfEnd\nWorldEnd\n";
+  ArchiveCache cache;
+  auto cached = parse(main, &cache);
+  EXPECT_EQ(cache.replays(), 1);
+  EXPECT_EQ(cached->target.named("Sphere").size(), 1u) << "the replayed Attribute set look to wet again";
+  expect_same_calls(*cached, *parse(main, nullptr));
+}
+
 }  // namespace
 }  // namespace darc::test
