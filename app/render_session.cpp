@@ -4,6 +4,7 @@
 #include "app/process_memory.h"
 
 #include "app/progress_reporter.h"
+#include "app/stats_file.h"
 #include "core/acceleration_reuse.h"
 #include "core/frame_memory.h"
 #include "core/scene_builder.h"
@@ -20,7 +21,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -163,11 +163,21 @@ int run_render_session(const AppOptions& o) {
   const ColorConfig& colors = *lookup.config;
   ProgressReporter progress(o.progress || !o.quiet, isatty(STDERR_FILENO) != 0);
   nlohmann::json stats_frames = nlohmann::json::array();
+  // "--stats stats/f.####.json": each frame's entry goes to a file of its own as soon as the frame
+  // is written, so a sequence stopped part-way (a farm task cancelled) keeps the stats it made.
+  const bool stats_per_frame = has_frame_number_pattern(o.stats_path);
   bool io_error = false;
   std::set<std::string> written;
   Clock::time_point segment_start = Clock::now();
 
   AccelerationReuse acceleration;  // a frame with the previous one's geometry keeps its BVH
+  ArchiveCache archives;           // each archive parsed once for the run (--no-archive-cache: off)
+  auto run_stats = [&] {
+    return nlohmann::json{{"archive_cache",
+                           {{"enabled", o.archive_cache},
+                            {"archives_parsed", archives.parses()},
+                            {"archives_replayed", archives.replays()}}}};
+  };
   SceneBuilder::Callbacks cb;
   int frames_seen = 0;  // frames --frames selected (rendered, skipped as existing or failed)
   if (o.frames)
@@ -242,19 +252,29 @@ int run_render_session(const AppOptions& o) {
         io_error = true;
       }
     }
-    stats_frames.push_back({{"frame", scene.output.frame_number},
-                            {"output", path},
-                            {"hider", to_string(o.hider)},
-                            {"resolution", {scene.output.xres, scene.output.yres}},
-                            {"pixel_samples", {scene.output.pixel_samples[0], scene.output.pixel_samples[1]}},
-                            {"curve_segments", scene.curves.size()},
-                            {"accelerator", to_string(scene.accel.kind())},
-                            {"accelerator_reused", reused},
-                            {"memory", memory_json(scene)},
-                            {"parse_seconds", stats.parse_seconds},
-                            {"build_seconds", stats.build_seconds},
-                            {"render_seconds", stats.render_seconds},
-                            {"counters", counters_json(stats.counters)}});
+    nlohmann::json frame_stats{{"frame", scene.output.frame_number},
+                               {"output", path},
+                               {"hider", to_string(o.hider)},
+                               {"resolution", {scene.output.xres, scene.output.yres}},
+                               {"pixel_samples", {scene.output.pixel_samples[0], scene.output.pixel_samples[1]}},
+                               {"curve_segments", scene.curves.size()},
+                               {"accelerator", to_string(scene.accel.kind())},
+                               {"accelerator_reused", reused},
+                               {"memory", memory_json(scene)},
+                               {"parse_seconds", stats.parse_seconds},
+                               {"build_seconds", stats.build_seconds},
+                               {"render_seconds", stats.render_seconds},
+                               {"counters", counters_json(stats.counters)}};
+    if (stats_per_frame) {
+      const std::string stats_path = substitute_frame_number(o.stats_path, scene.output.frame_number);
+      const std::string error = write_stats_file(stats_path, nlohmann::json::array({std::move(frame_stats)}), run_stats());
+      if (!error.empty()) {
+        std::fprintf(stderr, "darc: error: cannot write %s: %s\n", stats_path.c_str(), error.c_str());
+        io_error = true;
+      }
+    } else {
+      stats_frames.push_back(std::move(frame_stats));
+    }
     segment_start = Clock::now();
   };
 
@@ -265,7 +285,6 @@ int run_render_session(const AppOptions& o) {
   set_frame_memory_limit(o, overrides);
   SceneBuilder builder(diag, cb, overrides);
   RibParser parser(builder, diag);
-  ArchiveCache archives;
   if (o.archive_cache) parser.use_archive_cache(&archives);
   for (const std::string& in : o.inputs) {
     if (diag.aborted()) break;
@@ -278,17 +297,10 @@ int run_render_session(const AppOptions& o) {
     std::fprintf(stderr, "darc: warning: --frames selected none of the frames in the input\n");
   print_suppression_summary(diag);
 
-  if (!o.stats_path.empty()) {
-    std::ofstream f(o.stats_path);
-    f << nlohmann::json{{"software", std::string("darc ") + DARC_VERSION},
-                        {"archive_cache", {{"enabled", o.archive_cache},
-                                           {"archives_parsed", archives.parses()},
-                                           {"archives_replayed", archives.replays()}}},
-                        {"frames", stats_frames}}
-             .dump(2)
-      << "\n";
-    if (!f) {
-      std::fprintf(stderr, "darc: error: cannot write %s\n", o.stats_path.c_str());
+  if (!o.stats_path.empty() && !stats_per_frame) {
+    const std::string error = write_stats_file(o.stats_path, stats_frames, run_stats());
+    if (!error.empty()) {
+      std::fprintf(stderr, "darc: error: cannot write %s: %s\n", o.stats_path.c_str(), error.c_str());
       io_error = true;
     }
   }
