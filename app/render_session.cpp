@@ -1,5 +1,6 @@
 #include "app/render_session.h"
 
+#include "app/frame_count.h"
 #include "app/memory_limit.h"
 #include "app/process_memory.h"
 
@@ -162,6 +163,7 @@ int run_render_session(const AppOptions& o) {
   }
   const ColorConfig& colors = *lookup.config;
   ProgressReporter progress(o.progress || !o.quiet, isatty(STDERR_FILENO) != 0);
+  if (o.progress || !o.quiet) progress.set_frames_in_run(count_frames(o.inputs, o.frames).value_or(0));
   nlohmann::json stats_frames = nlohmann::json::array();
   // "--stats stats/f.####.json": each frame's entry goes to a file of its own as soon as the frame
   // is written, so a sequence stopped part-way (a farm task cancelled) keeps the stats it made.
@@ -197,6 +199,7 @@ int run_render_session(const AppOptions& o) {
         if (!o.quiet)
           std::fprintf(stderr, "darc: %s exists: frame %d skipped\n", path.c_str(), scene.output.frame_number);
         segment_start = Clock::now();
+        progress.skip_frame();
         return;
       }
       if (existing == ExistingFrame::HasErrors && !o.quiet)
