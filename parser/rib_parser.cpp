@@ -119,7 +119,7 @@ void RibParser::skip_to_next_request(Lexer& lexer) {
 }
 
 void RibParser::dispatch(const std::string& request, RequestReader& args, const SourceLoc& loc) {
-  if (request == "ReadArchive") return read_archive(args);
+  if (request == "ReadArchive") return read_archive(args, loc);
   if (request == "Declare") return declare(args, loc);
   if (request == "Option") return option(args, loc);
   if (request == "ErrorHandler") return error_handler(args, loc);
@@ -198,22 +198,27 @@ std::string RibParser::resolve_archive(const std::string& name) const {
   return name;
 }
 
-void RibParser::read_archive(RequestReader& args) {
+void RibParser::read_archive(RequestReader& args, const SourceLoc& loc) {
   const std::string name = args.string("the archive name");
   args.expect_request_end("ReadArchive");
-  if (!archive_files_allowed_) throw RibError(fmt::format("cannot open archive \"{}\": file access is disabled", name));
+  include_archive(name, loc);
+}
+
+void RibParser::include_archive(const std::string& name, const SourceLoc& loc) {
+  if (!archive_files_allowed_)
+    throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\": file access is disabled", name));
   const std::string path = resolve_archive(name);
   std::string text;
   std::string reason;
   if (!is_readable_file(path) || !read_rib_text(path, text, reason)) {
-    throw RibError(fmt::format("cannot open archive \"{}\"", name));
+    throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\"", name));
   }
   const std::string canonical = canonical_name(path);
   if (std::find(include_stack_.begin(), include_stack_.end(), canonical) != include_stack_.end()) {
-    throw RibError(fmt::format("archive \"{}\" includes itself (cycle through {})", name, canonical));
+    throw RibSyntaxError(loc, fmt::format("archive \"{}\" includes itself (cycle through {})", name, canonical));
   }
   if (include_stack_.size() >= kMaxArchiveDepth) {
-    throw RibError(fmt::format("archive \"{}\" is nested deeper than {} levels", name, kMaxArchiveDepth));
+    throw RibSyntaxError(loc, fmt::format("archive \"{}\" is nested deeper than {} levels", name, kMaxArchiveDepth));
   }
   parse_text(std::move(text), path);
 }

@@ -41,7 +41,11 @@ class RibParser {
   void parse_requests(Lexer& lexer);
   void dispatch(const std::string& request, RequestReader& args, const SourceLoc& loc);
   void skip_to_next_request(Lexer& lexer);
-  void read_archive(RequestReader& args);
+  void read_archive(RequestReader& args, const SourceLoc& loc);
+  // Reads the archive `name` (beside the including file, then on the archive search path) into
+  // the request stream; errors (missing file, cycle, depth) are reported at `loc`. ReadArchive
+  // and DelayedReadArchive both come here.
+  void include_archive(const std::string& name, const SourceLoc& loc);
   void declare(RequestReader& args, const SourceLoc& loc);
   void option(RequestReader& args, const SourceLoc& loc);
   void error_handler(RequestReader& args, const SourceLoc& loc);
