@@ -397,7 +397,7 @@ RequestHandler find_request_handler(std::string_view name) {
 }
 
 bool is_unsupported_request(std::string_view name) {
-  static constexpr std::array<std::string_view, 24> kUnsupported = {"Cone",
+  static constexpr std::array<std::string_view, 23> kUnsupported = {"Cone",
                                                                     "Cylinder",
                                                                     "Disk",
                                                                     "Paraboloid",
@@ -410,7 +410,6 @@ bool is_unsupported_request(std::string_view name) {
                                                                     "Points",
                                                                     "SubdivisionMesh",
                                                                     "Blobby",
-                                                                    "Procedural",
                                                                     "Geometry",
                                                                     "SolidBegin",
                                                                     "SolidEnd",

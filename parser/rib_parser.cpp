@@ -32,8 +32,10 @@ bool is_readable_file(const fs::path& p) {
   return fs::is_regular_file(p, ec);
 }
 
-// Splits a search path "a:b:&" replacing "&" by the previous path's directories.
-std::vector<std::string> expand_search_path(const std::string& spec, const std::vector<std::string>& previous) {
+// Splits a search path "a:b:&:@" replacing "&" by the previous path's directories and "@" by
+// the default ones.
+std::vector<std::string> expand_search_path(const std::string& spec, const std::vector<std::string>& previous,
+                                            const std::vector<std::string>& defaults) {
   std::vector<std::string> dirs;
   size_t begin = 0;
   while (begin <= spec.size()) {
@@ -42,10 +44,23 @@ std::vector<std::string> expand_search_path(const std::string& spec, const std::
     const std::string dir = spec.substr(begin, end - begin);
     if (dir == "&") {
       dirs.insert(dirs.end(), previous.begin(), previous.end());
+    } else if (dir == "@") {
+      dirs.insert(dirs.end(), defaults.begin(), defaults.end());
     } else if (!dir.empty()) {
       dirs.push_back(dir);
     }
     begin = end + 1;
+  }
+  return dirs;
+}
+
+// The search path given by every string of `param`.
+std::vector<std::string> search_path(const Param& param, const std::vector<std::string>& previous,
+                                     const std::vector<std::string>& defaults) {
+  std::vector<std::string> dirs;
+  for (const std::string& spec : param.strings) {
+    const std::vector<std::string> part = expand_search_path(spec, previous, defaults);
+    dirs.insert(dirs.end(), part.begin(), part.end());
   }
   return dirs;
 }
@@ -123,6 +138,7 @@ void RibParser::dispatch(const std::string& request, RequestReader& args, const 
   if (request == "Declare") return declare(args, loc);
   if (request == "Option") return option(args, loc);
   if (request == "ErrorHandler") return error_handler(args, loc);
+  if (request == "Procedural" || request == "Procedural2") return procedural(args, request, loc);
   if (RequestHandler handler = find_request_handler(request)) {
     RequestContext context{args, target_, loc, request};
     return handler(context);
@@ -154,13 +170,15 @@ void RibParser::option(RequestReader& args, const SourceLoc& loc) {
   const std::string category = args.string("the option category");
   const ParamList params = args.param_list("Option");
   if (category == "searchpath") {
-    if (const Param* archive = params.find("archive")) {
-      std::vector<std::string> dirs;
-      for (const std::string& spec : archive->strings) {
-        const std::vector<std::string> part = expand_search_path(spec, archive_path_);
-        dirs.insert(dirs.end(), part.begin(), part.end());
-      }
-      archive_path_ = std::move(dirs);
+    if (const Param* archive = params.find("archive")) archive_path_ = search_path(*archive, archive_path_, {});
+    if (const Param* procedural = params.find("procedural")) {
+      // Relative folders are taken from the file that names them, so that a scene and its
+      // generators move together.
+      const fs::path base = include_stack_.empty() ? fs::path() : fs::path(include_stack_.back()).parent_path();
+      std::vector<std::string> dirs = search_path(*procedural, procedural_path_, procedural_folders_);
+      for (std::string& dir : dirs)
+        if (fs::path(dir).is_relative()) dir = (base / dir).string();
+      procedural_path_ = std::move(dirs);
     }
   }
   target_.option(category, params, loc);

@@ -2,10 +2,12 @@
 // an RiTarget and reports every error and warning with its file:line:column to Diagnostics,
 // recovering at the next request so that one run reports all errors. ReadArchive is inlined
 // here (the target never sees it), searching the including file's directory and then
-// Option "searchpath" "archive". ErrorHandler is applied here, to the Diagnostics, from the
+// Option "searchpath" "archive"; so are the procedurals DelayedReadArchive and RunProgram
+// (rib_parser_procedural.cpp). ErrorHandler is applied here, to the Diagnostics, from the
 // next request on (error_handler.h); under "abort" parsing stops at the first error.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +15,7 @@
 #include "parser/diagnostics.h"
 #include "parser/request_reader.h"
 #include "parser/ri_target.h"
+#include "parser/run_program.h"
 
 namespace darc {
 
@@ -32,9 +35,20 @@ class RibParser {
   // The archive search path currently in effect (from Option "searchpath" "archive").
   const std::vector<std::string>& archive_search_path() const { return archive_path_; }
 
-  // Whether ReadArchive may read files (the default). When off, every ReadArchive is an error
-  // and no file is looked up or opened: for input that must not reach the file system (fuzzing).
+  // Whether ReadArchive and procedurals may read files and start programs (the default). When
+  // off, every ReadArchive, DelayedReadArchive and RunProgram is an error, no file is looked up
+  // or opened and no program started: for input that must not reach the system (fuzzing).
   void allow_archive_files(bool allowed) { archive_files_allowed_ = allowed; }
+
+  // Procedurals (rib_parser_procedural.cpp). The folders RunProgram may start programs from
+  // besides those of Option "searchpath" "procedural" (--procedural-path); "@" in that option
+  // stands for them.
+  // Relative folders are taken from the current directory.
+  void set_procedural_folders(const std::vector<std::string>& folders);
+  // The time and output limits of one RunProgram request (--procedural-timeout).
+  void set_run_program_limits(const RunProgramLimits& limits) { run_program_limits_ = limits; }
+  // The procedural search path currently in effect (from Option "searchpath" "procedural").
+  const std::vector<std::string>& procedural_search_path() const { return procedural_path_; }
 
  private:
   void parse_text(std::string text, const std::string& name);
@@ -46,6 +60,11 @@ class RibParser {
   // the request stream; errors (missing file, cycle, depth) are reported at `loc`. ReadArchive
   // and DelayedReadArchive both come here.
   void include_archive(const std::string& name, const SourceLoc& loc);
+  // Procedural, Procedural2 (rib_parser_procedural.cpp).
+  void procedural(RequestReader& args, const std::string& request, const SourceLoc& loc);
+  void run_procedural_program(const std::string& program, const std::string& data, double detail, const SourceLoc& loc);
+  // Reads a procedural's RIB (`read` calls the parser) in the graphics state of its request.
+  void expand_procedural(const std::function<void()>& read, const SourceLoc& loc);
   void declare(RequestReader& args, const SourceLoc& loc);
   void option(RequestReader& args, const SourceLoc& loc);
   void error_handler(RequestReader& args, const SourceLoc& loc);
@@ -57,6 +76,9 @@ class RibParser {
   std::vector<std::string> archive_path_;
   std::vector<std::string> include_stack_;  // files being read, outermost first (canonical paths)
   bool archive_files_allowed_ = true;
+  std::vector<std::string> procedural_path_;     // Option "searchpath" "procedural", absolute
+  std::vector<std::string> procedural_folders_;  // --procedural-path
+  RunProgramLimits run_program_limits_;
 };
 
 }  // namespace darc
