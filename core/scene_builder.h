@@ -120,6 +120,9 @@ class SceneBuilder : public RiTarget {
   void points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                                const std::vector<int>& indices, const ParamList& params,
                                const SourceLoc& loc) override;
+  // Not wanted in a frame that is not rendered; the area is the bound's projection clipped to the
+  // image (scene_builder_procedural.cpp).
+  ProceduralBound procedural_bound(const std::array<double, 6>& bound, const SourceLoc& loc) override;
 
  private:
   enum class Block { Frame, World, Attribute, Transform, Object };
