@@ -31,6 +31,10 @@ struct AppOptions {
   // --memory-limit: the memory darc may use in all. Unset: the smallest limit Linux gives this
   // process (app/memory_limit.h); 0 (--memory-limit none): no limit.
   std::optional<uint64_t> memory_limit_bytes;
+  // --procedural-path (repeatable): folders Procedural "RunProgram" may start programs from,
+  // besides those of Option "searchpath" "procedural".
+  std::vector<std::string> procedural_paths;
+  double procedural_timeout_seconds = 60;  // --procedural-timeout: per RunProgram request
 };
 
 // Exit codes (DESIGN.md).
