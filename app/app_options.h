@@ -28,6 +28,10 @@ struct AppOptions {
   bool progress = false;  // force progress even when quiet would hide it
   bool cat = false;       // --cat: print the parsed RIB instead of rendering
   std::string ocio_config;
+  // --memory-limit: the memory darc may use in all. Unset: the smallest limit Linux gives this
+  // process (app/memory_limit.h); 0 (--memory-limit none): no limit.
+  std::optional<uint64_t> memory_limit_bytes;
+  bool archive_cache = true;  // --no-archive-cache: parse every ReadArchive again (for comparison)
 };
 
 // Exit codes (DESIGN.md).

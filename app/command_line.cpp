@@ -1,4 +1,5 @@
 #include "app/app_options.h"
+#include "app/memory_limit.h"
 
 #include <CLI/CLI.hpp>
 
@@ -71,8 +72,23 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
   app.add_flag("--cat", o.cat, "print the parsed RIB (canonical form) instead of rendering");
   app.add_option("--ocio-config", o.ocio_config,
                  "OpenColorIO config for 8-bit outputs (default: $OCIO, else built in)");
+  bool no_archive_cache = false;
+  app.add_flag("--no-archive-cache", no_archive_cache,
+               "read and parse every ReadArchive again instead of replaying the archive parsed the first time");
+  std::string memory_limit;
+  app.add_option("--memory-limit", memory_limit,
+                 "memory darc may use, e.g. 8G or 500M, or none (default: what the machine, the cgroup and "
+                 "ulimit allow); a frame that would need more fails with an error instead of being killed");
   try {
     app.parse(argc, argv);
+    o.archive_cache = !no_archive_cache;
+    if (memory_limit == "none") o.memory_limit_bytes = 0;
+    else if (!memory_limit.empty()) {
+      o.memory_limit_bytes = parse_byte_size(memory_limit);
+      if (!o.memory_limit_bytes || *o.memory_limit_bytes == 0)
+        throw CLI::ValidationError("--memory-limit", "expected a size such as 8G, 500M or 123456 (bytes), or none, "
+                                                     "found \"" + memory_limit + "\"");
+    }
     if (!res.empty()) {
       if (!parse_resolution(res, o.xres, o.yres))
         throw CLI::ValidationError(

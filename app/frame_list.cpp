@@ -78,4 +78,9 @@ std::string substitute_frame_number(const std::string& name, int frame) {
   return name;
 }
 
+bool has_frame_number_pattern(const std::string& name) {
+  // Two different frames give two different names exactly when the name holds a pattern.
+  return substitute_frame_number(name, 0) != substitute_frame_number(name, 1);
+}
+
 }  // namespace darc

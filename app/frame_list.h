@@ -25,4 +25,8 @@ class FrameList {
 // returned unchanged.
 std::string substitute_frame_number(const std::string& name, int frame);
 
+// True when substitute_frame_number would put the frame number into `name` (a '#' run, %d or
+// %0Nd), so that each frame gets a file of its own.
+bool has_frame_number_pattern(const std::string& name);
+
 }  // namespace darc

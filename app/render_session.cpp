@@ -1,8 +1,13 @@
 #include "app/render_session.h"
 
+#include "app/frame_count.h"
+#include "app/memory_limit.h"
 #include "app/process_memory.h"
 
 #include "app/progress_reporter.h"
+#include "app/stats_file.h"
+#include "core/acceleration_reuse.h"
+#include "core/frame_memory.h"
 #include "core/scene_builder.h"
 #include "integrator/color_config.h"
 #include "integrator/image_writer.h"
@@ -13,10 +18,10 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -94,6 +99,32 @@ nlohmann::json memory_json(const Scene& scene) {
           {"peak_resident_bytes", peak_resident_bytes()}};
 }
 
+// The part of the memory limit a frame's geometry may take (SceneBuilder checks its estimate):
+// what the process may hold, less what it holds now and twice the largest input file (the parser
+// holds a file's text while its frames are built; a gzip file's text is larger than the file,
+// which the factor of two roughly covers).
+void set_frame_memory_limit(const AppOptions& o, FrameOverrides& overrides) {
+  MemoryLimit limit;
+  if (o.memory_limit_bytes) {
+    if (*o.memory_limit_bytes == 0) return;  // --memory-limit none
+    limit = MemoryLimit{*o.memory_limit_bytes, "--memory-limit"};
+  } else if (std::optional<MemoryLimit> system = memory_limit(this_process_memory_inputs())) {
+    limit = *system;
+    limit.source += "; --memory-limit changes it";
+  } else {
+    return;
+  }
+  const MemoryLimitInputs now = this_process_memory_inputs();
+  uint64_t text = 0;
+  for (const std::string& in : o.inputs) {
+    std::error_code ec;
+    if (in != "-") text = std::max<uint64_t>(text, fs::file_size(in, ec) * (ec ? 0 : 1));
+  }
+  const uint64_t held = now.process_resident + 2 * text;
+  overrides.memory_limit_bytes = limit.bytes > held ? limit.bytes - held : 1;
+  overrides.memory_limit_source = "the limit is " + format_bytes(limit.bytes) + ", from " + limit.source;
+}
+
 }  // namespace
 
 int run_render_session(const AppOptions& o) {
@@ -132,11 +163,23 @@ int run_render_session(const AppOptions& o) {
   }
   const ColorConfig& colors = *lookup.config;
   ProgressReporter progress(o.progress || !o.quiet, isatty(STDERR_FILENO) != 0);
+  if (o.progress || !o.quiet) progress.set_frames_in_run(count_frames(o.inputs, o.frames).value_or(0));
   nlohmann::json stats_frames = nlohmann::json::array();
+  // "--stats stats/f.####.json": each frame's entry goes to a file of its own as soon as the frame
+  // is written, so a sequence stopped part-way (a farm task cancelled) keeps the stats it made.
+  const bool stats_per_frame = has_frame_number_pattern(o.stats_path);
   bool io_error = false;
   std::set<std::string> written;
   Clock::time_point segment_start = Clock::now();
 
+  AccelerationReuse acceleration;  // a frame with the previous one's geometry keeps its BVH
+  ArchiveCache archives;           // each archive parsed once for the run (--no-archive-cache: off)
+  auto run_stats = [&] {
+    return nlohmann::json{{"archive_cache",
+                           {{"enabled", o.archive_cache},
+                            {"archives_parsed", archives.parses()},
+                            {"archives_replayed", archives.replays()}}}};
+  };
   SceneBuilder::Callbacks cb;
   int frames_seen = 0;  // frames --frames selected (rendered, skipped as existing or failed)
   if (o.frames)
@@ -156,6 +199,7 @@ int run_render_session(const AppOptions& o) {
         if (!o.quiet)
           std::fprintf(stderr, "darc: %s exists: frame %d skipped\n", path.c_str(), scene.output.frame_number);
         segment_start = Clock::now();
+        progress.skip_frame();
         return;
       }
       if (existing == ExistingFrame::HasErrors && !o.quiet)
@@ -166,7 +210,7 @@ int run_render_session(const AppOptions& o) {
       std::fprintf(stderr, "darc: warning: frame %d overwrites %s (use '#' or %%04d in the name)\n",
                    scene.output.frame_number, path.c_str());
     Clock::time_point t0 = Clock::now();
-    scene.build_acceleration();
+    const bool reused = acceleration.build(scene);
     stats.build_seconds = seconds_since(t0);
 
     RenderOptions ro;
@@ -211,18 +255,29 @@ int run_render_session(const AppOptions& o) {
         io_error = true;
       }
     }
-    stats_frames.push_back({{"frame", scene.output.frame_number},
-                            {"output", path},
-                            {"hider", to_string(o.hider)},
-                            {"resolution", {scene.output.xres, scene.output.yres}},
-                            {"pixel_samples", {scene.output.pixel_samples[0], scene.output.pixel_samples[1]}},
-                            {"curve_segments", scene.curves.size()},
-                            {"accelerator", to_string(scene.accel.kind())},
-                            {"memory", memory_json(scene)},
-                            {"parse_seconds", stats.parse_seconds},
-                            {"build_seconds", stats.build_seconds},
-                            {"render_seconds", stats.render_seconds},
-                            {"counters", counters_json(stats.counters)}});
+    nlohmann::json frame_stats{{"frame", scene.output.frame_number},
+                               {"output", path},
+                               {"hider", to_string(o.hider)},
+                               {"resolution", {scene.output.xres, scene.output.yres}},
+                               {"pixel_samples", {scene.output.pixel_samples[0], scene.output.pixel_samples[1]}},
+                               {"curve_segments", scene.curves.size()},
+                               {"accelerator", to_string(scene.accel.kind())},
+                               {"accelerator_reused", reused},
+                               {"memory", memory_json(scene)},
+                               {"parse_seconds", stats.parse_seconds},
+                               {"build_seconds", stats.build_seconds},
+                               {"render_seconds", stats.render_seconds},
+                               {"counters", counters_json(stats.counters)}};
+    if (stats_per_frame) {
+      const std::string stats_path = substitute_frame_number(o.stats_path, scene.output.frame_number);
+      const std::string error = write_stats_file(stats_path, nlohmann::json::array({std::move(frame_stats)}), run_stats());
+      if (!error.empty()) {
+        std::fprintf(stderr, "darc: error: cannot write %s: %s\n", stats_path.c_str(), error.c_str());
+        io_error = true;
+      }
+    } else {
+      stats_frames.push_back(std::move(frame_stats));
+    }
     segment_start = Clock::now();
   };
 
@@ -230,8 +285,10 @@ int run_render_session(const AppOptions& o) {
   overrides.xres = o.xres;
   overrides.yres = o.yres;
   overrides.pixel_samples = o.pixel_samples;
+  set_frame_memory_limit(o, overrides);
   SceneBuilder builder(diag, cb, overrides);
   RibParser parser(builder, diag);
+  if (o.archive_cache) parser.use_archive_cache(&archives);
   for (const std::string& in : o.inputs) {
     if (diag.aborted()) break;
     parser.parse_file(in);
@@ -243,11 +300,10 @@ int run_render_session(const AppOptions& o) {
     std::fprintf(stderr, "darc: warning: --frames selected none of the frames in the input\n");
   print_suppression_summary(diag);
 
-  if (!o.stats_path.empty()) {
-    std::ofstream f(o.stats_path);
-    f << nlohmann::json{{"software", std::string("darc ") + DARC_VERSION}, {"frames", stats_frames}}.dump(2) << "\n";
-    if (!f) {
-      std::fprintf(stderr, "darc: error: cannot write %s\n", o.stats_path.c_str());
+  if (!o.stats_path.empty() && !stats_per_frame) {
+    const std::string error = write_stats_file(o.stats_path, stats_frames, run_stats());
+    if (!error.empty()) {
+      std::fprintf(stderr, "darc: error: cannot write %s: %s\n", o.stats_path.c_str(), error.c_str());
       io_error = true;
     }
   }

@@ -84,6 +84,7 @@ class NullTarget : public RiTarget {
   void points_polygons(const std::vector<int>&, const std::vector<int>&, const ParamList&, const SourceLoc&) override {}
   void points_general_polygons(const std::vector<int>&, const std::vector<int>&, const std::vector<int>&,
                                const ParamList&, const SourceLoc&) override {}
+  void skipped_primitive(const std::string&, const SourceLoc&) override {}
 };
 
 void append_number(std::string& out, double v) {

@@ -39,6 +39,26 @@ void CurveSet::add_segment(const std::array<Vec3f, 4>& points, const std::array<
   attribute_id.push_back(attribute);
 }
 
+void CurveSet::append(const CurveSet& other, uint32_t attribute, uint32_t strand_offset) {
+  const size_t first = size(), n = other.size();
+  cp.insert(cp.end(), other.cp.begin(), other.cp.end());
+  width.insert(width.end(), other.width.begin(), other.width.end());
+  for (size_t i = 0; i < n; ++i) {
+    const SegmentShading& colours = other.shading[other.shading_index[i]];
+    if (shading.empty() || !(shading.back() == colours)) shading.push_back(colours);
+    shading_index.push_back(uint32_t(shading.size() - 1));
+  }
+  if (!other.normal.empty()) {
+    normal.resize(kNormalsPerSegment * first, Vec3f{});
+    normal.insert(normal.end(), other.normal.begin(), other.normal.end());
+  } else if (!normal.empty()) {
+    normal.resize(kNormalsPerSegment * (first + n), Vec3f{});
+  }
+  flags.insert(flags.end(), other.flags.begin(), other.flags.end());
+  for (size_t i = 0; i < n; ++i) strand_id.push_back(other.strand_id[i] + strand_offset);
+  attribute_id.resize(first + n, attribute);
+}
+
 void CurveSet::mark_strand_ends(size_t first) {
   const size_t n = size();
   size_t begin = first;

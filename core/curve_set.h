@@ -71,6 +71,10 @@ struct CurveSet {
   // ribbon faces the ray.
   void add_segment(const std::array<Vec3f, 4>& points, const std::array<float, 4>& widths, uint32_t strand,
                    uint32_t attribute, const SegmentShading& colours = {}, const Vec3f* normals = nullptr);
+  // Appends every segment of `other` (built on its own, strand ids from 0) with the attribute
+  // `attribute` and its strand ids moved up by `strand_offset`: the same arrays as building
+  // them here (colours are shared with the previous segment's entry when equal, as add_segment does).
+  void append(const CurveSet& other, uint32_t attribute, uint32_t strand_offset);
   // Sets the strand-start and strand-end flags of segments [first, size()) from their strand ids:
   // a strand's first and last segments, unless the strand is closed (its first point is its last).
   void mark_strand_ends(size_t first);

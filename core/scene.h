@@ -90,6 +90,11 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<LightDesc> lights;
 
+  // Says the geometry is bitwise that of another scene with the same non-empty key: every
+  // geometry request of the frame was replayed from the archive cache, in the same order, with the
+  // same transforms (SceneBuilder). Empty: unknown. AccelerationReuse builds on it.
+  std::string geometry_key;
+
   // One acceleration structure over everything: primitive index p < curves.size() is a curve
   // segment, then the spheres, then the polygons.
   Accelerator accel;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/shader_parameter_checks.h"
 #include "core/unused_request_checks.h"
@@ -112,6 +113,10 @@ void SceneBuilder::world_begin(const SourceLoc& loc) {
 
 void SceneBuilder::start_scene(const SourceLoc& loc) {
   scene_ = std::make_unique<Scene>();
+  frame_memory_estimate_ = 0;
+  frame_over_memory_ = false;
+  geometry_key_.clear();
+  geometry_key_valid_ = true;
   material_ids_.clear();
   Scene& s = *scene_;
   OutputSettings out = options_.output;
@@ -144,6 +149,8 @@ void SceneBuilder::start_scene(const SourceLoc& loc) {
   named_spaces_["world"] = Matrix4{};
   named_spaces_["camera"] = camera_to_world_;
   light_handles_.clear();
+  area_light_handles_.clear();
+  skipped_primitives_.clear();
   attributes_.lights_on.clear();
   for (const PendingLight& pl : options_.pre_world_lights) {
     LightDesc d = pl.desc;
@@ -183,7 +190,19 @@ void SceneBuilder::world_end(const SourceLoc& loc) {
   in_world_ = false;
   objects_.clear();
   std::unique_ptr<Scene> scene = std::move(scene_);
-  if (!frame_skipped_ && !diag_.aborted()) {
+  if (scene && !frame_skipped_) {
+    if (geometry_key_valid_ && !geometry_key_.empty()) scene->geometry_key = std::move(geometry_key_);
+    // Curves of replayed calls this frame did not use are not kept for the next one.
+    for (auto it = curve_chunks_.begin(); it != curve_chunks_.end();) {
+      if (!std::exchange(it->second.used, false)) it = curve_chunks_.erase(it);
+      else ++it;
+    }
+  }
+  if (frame_over_memory_ && !frame_skipped_) {
+    ++frames_failed_;
+    if (callbacks_.frame_failed) callbacks_.frame_failed(frame_number_);
+  } else if (!frame_skipped_ && !diag_.aborted()) {
+    warn_if_nothing_renderable(*scene, loc);
     ++frames_ready_;
     if (callbacks_.frame_ready) callbacks_.frame_ready(std::move(*scene));
   }
@@ -479,6 +498,7 @@ void SceneBuilder::attribute(const std::string& category, const ParamList& param
     for (const Param& p : params.params) ray_tracing_attribute(category, p, loc);
     return;
   }
+  if (category == "Ri") return ri_attribute(params, loc);
   // One warning per category: real files repeat vendor attributes on every object.
   diag_.warning_once("attribute:" + category, loc, "Attribute",
                      "Attribute \"" + category + "\" has no effect in darc: ignored");
@@ -553,6 +573,7 @@ void SceneBuilder::add_light(const std::string& name, const std::string& handle,
   scene_->lights.push_back(std::move(d));
   uint32_t idx = uint32_t(scene_->lights.size() - 1);
   light_handles_[handle] = idx;
+  area_light_handles_.erase(handle);  // a handle names the latest light declared with it
   attributes_.lights_on.push_back(idx);
 }
 
@@ -571,12 +592,19 @@ void SceneBuilder::area_light_source(const std::string& name, const std::string&
                      "area lights do not illuminate other objects in darc: their geometry is drawn emissive");
   attributes_.area_light = name;
   attributes_.area_light_params = std::move(checked);
+  light_handles_.erase(handle);  // a handle names the latest light declared with it
+  area_light_handles_.insert(handle);
 }
 
 void SceneBuilder::illuminate(const std::string& handle, bool on, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.illuminate(handle, on, loc); })) return;
   auto it = light_handles_.find(handle);
-  if (it == light_handles_.end()) throw RibError("unknown light handle \"" + handle + "\"");
+  if (it == light_handles_.end()) {
+    // An area light lights nothing here (its geometry is drawn emissive whatever Illuminate
+    // says), so switching it changes nothing; its handle is valid all the same.
+    if (area_light_handles_.count(handle)) return;
+    throw RibError("unknown light handle \"" + handle + "\"");
+  }
   auto& v = attributes_.lights_on;
   auto pos = std::find(v.begin(), v.end(), it->second);
   if (on && pos == v.end()) v.push_back(it->second);

@@ -11,8 +11,10 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 namespace darc {
@@ -21,6 +23,11 @@ struct FrameOverrides {
   int xres = 0, yres = 0;             // --res (0: keep Format)
   double pixel_samples = 0;           // --pixel-samples (0: keep PixelSamples)
   std::string output;                 // -o (empty: keep Display name)
+  // The memory a frame's geometry may take (core/frame_memory.h estimates it request by request);
+  // a frame over it fails with an error naming the request that crossed it and is not rendered.
+  // 0: no limit. The source says where the limit comes from, for the message.
+  uint64_t memory_limit_bytes = 0;
+  std::string memory_limit_source;
 };
 
 class SceneBuilder : public RiTarget {
@@ -46,6 +53,7 @@ class SceneBuilder : public RiTarget {
   void finish(const SourceLoc& end);
 
   // RiTarget
+  void replayed_request(uint64_t id) override { replayed_id_ = id; }
   void version(double, const SourceLoc&) override {}
   void declare(const std::string&, const std::string&, const SourceLoc&) override {}
   void option(const std::string& category, const ParamList& params, const SourceLoc& loc) override;
@@ -115,6 +123,7 @@ class SceneBuilder : public RiTarget {
   void points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                                const std::vector<int>& indices, const ParamList& params,
                                const SourceLoc& loc) override;
+  void skipped_primitive(const std::string& request, const SourceLoc& loc) override;
 
  private:
   enum class Block { Frame, World, Attribute, Transform, Object };
@@ -129,6 +138,15 @@ class SceneBuilder : public RiTarget {
   bool in_world() const { return in_world_; }
   // False while skipping an unselected frame or recording an object: geometry is not built.
   bool building_geometry(const char* request, const SourceLoc& loc);
+  // Adds a geometry request's memory estimate to the frame's (FrameOverrides::memory_limit_bytes).
+  // Throws RibError at the request that takes the frame over the limit; false for the frame's
+  // later geometry, which is no longer built.
+  bool reserve_frame_memory(uint64_t curve_segments, uint64_t surfaces, uint64_t polygon_points);
+  // The id of the cached-archive call being replayed (RiTarget::replayed_request), 0 for any other.
+  uint64_t replayed_id() const;
+  // Adds a geometry request to the frame's geometry key (Scene::geometry_key); a request that
+  // is not a replayed one leaves the frame without a key.
+  void note_geometry(uint64_t id);
   // Options may only change outside the world block.
   bool option_allowed(const char* request, const SourceLoc& loc);
   uint32_t make_material(const SourceLoc& loc);
@@ -157,6 +175,12 @@ class SceneBuilder : public RiTarget {
   void set_transmission(Transmission t, bool asks_for_shader_opacity, const SourceLoc& loc);
   // Whether a light being declared casts ray-traced shadows ("shadowname", Attribute "light").
   bool light_casts_shadows(const std::string& handle, const ParamList& params, const SourceLoc& loc);
+  // Attribute "Ri" (scene_builder_ri_attribute.cpp): RenderMan 21+ spellings of RI requests as
+  // attributes; "Basis" and "BasisStep" set the curve basis as Basis does.
+  void ri_attribute(const ParamList& params, const SourceLoc& loc);
+  // At WorldEnd (scene_builder_renderable.cpp): one warning when the frame has nothing that can
+  // show up in its image, with the reason.
+  void warn_if_nothing_renderable(const Scene& scene, const SourceLoc& loc);
   // Inside MotionBegin/MotionEnd only the first sample (the shutter-open one) is applied.
   bool skip_motion_sample();
   // When recording an ObjectBegin block, stores the call and returns true.
@@ -184,6 +208,23 @@ class SceneBuilder : public RiTarget {
   int frames_ready_ = 0, frames_failed_ = 0;
 
   std::unique_ptr<Scene> scene_;  // the frame being built (inside the world block)
+  uint64_t frame_memory_estimate_ = 0;  // core/frame_memory.h, of the geometry built so far
+  bool frame_over_memory_ = false;      // the frame went over memory_limit_bytes: not rendered
+  // Archive reuse (parser/archive_cache.h): the id of the replayed call being made, the curves
+  // built from each replayed Curves call with what they depend on besides the call itself
+  // (kept from one frame to the next while used), and the frame's geometry key.
+  uint64_t replayed_id_ = 0;
+  struct CurveChunk {
+    Matrix4 ctm;
+    CurveBasis basis;
+    Vec3f color, opacity;
+    CurveSet segments;  // strand ids from 0
+    uint32_t strands = 0;
+    bool used = false;  // this frame
+  };
+  std::unordered_map<uint64_t, CurveChunk> curve_chunks_;
+  std::string geometry_key_;
+  bool geometry_key_valid_ = true;
   // The attribute state a material was made from (make_material interns materials by it). The
   // key holds its parameter lists, so that an address is never reused by another list while it
   // is a key.
@@ -208,6 +249,10 @@ class SceneBuilder : public RiTarget {
   Matrix4 camera_to_world_;
   std::map<std::string, Matrix4> named_spaces_;  // CoordinateSystem, relative to world
   std::map<std::string, uint32_t> light_handles_;
+  // AreaLightSource handles: valid for Illuminate, though area lights light nothing in darc.
+  std::set<std::string> area_light_handles_;
+  // This frame's primitive requests that darc does not implement, by request name.
+  std::map<std::string, int> skipped_primitives_;
   uint32_t next_strand_id_ = 0;
 
   // ObjectBegin/End: the calls of each object, replayed at ObjectInstance.

@@ -2,6 +2,7 @@
 // shapes of the scene being built (the graphics state itself lives in scene_builder.cpp).
 #include "core/curve_builder.h"
 #include "core/curve_set.h"
+#include "core/frame_memory.h"
 #include "core/scene_builder.h"
 
 #include <fmt/format.h>
@@ -17,6 +18,41 @@ namespace darc {
 bool SceneBuilder::building_geometry(const char* request, const SourceLoc& loc) {
   if (!in_world_) throw RibError(std::string(request) + " outside WorldBegin/WorldEnd");
   return !frame_skipped_ && scene_ != nullptr && (void(loc), true);
+}
+
+bool SceneBuilder::reserve_frame_memory(uint64_t curve_segments, uint64_t surfaces, uint64_t polygon_points) {
+  if (frame_over_memory_) return false;
+  if (overrides_.memory_limit_bytes == 0) return true;
+  frame_memory_estimate_ += frame_memory_estimate(curve_segments, surfaces, polygon_points);
+  if (frame_memory_estimate_ <= overrides_.memory_limit_bytes) return true;
+  frame_over_memory_ = true;
+  // (The parser prefixes the message with the request's name and position.)
+  throw RibError("the frame's geometry would need about " +
+                 format_bytes(frame_memory_estimate_) + " with this request, more than the " +
+                 format_bytes(overrides_.memory_limit_bytes) + " a frame may use (" +
+                 (overrides_.memory_limit_source.empty() ? std::string("--memory-limit")
+                                                         : overrides_.memory_limit_source) +
+                 "); the frame is not rendered");
+}
+
+uint64_t SceneBuilder::replayed_id() const {
+  // Calls replayed from an ObjectBegin block share the ObjectInstance's id: not one request.
+  return replaying_ ? 0 : replayed_id_;
+}
+
+void SceneBuilder::note_geometry(uint64_t id) {
+  if (id == 0) {
+    geometry_key_valid_ = false;
+    return;
+  }
+  // The request and the transform it is built with (the basis too, for curves: it is in the
+  // key through the attribute state, whose changes are requests of their own in the same archive
+  // or before it; the transform alone can move without a request of the archive changing).
+  geometry_key_.append(reinterpret_cast<const char*>(&id), sizeof id);
+  geometry_key_.append(reinterpret_cast<const char*>(&ctm_.m), sizeof ctm_.m);
+  const CurveBasis& b = attributes_.vbasis;
+  geometry_key_.append(reinterpret_cast<const char*>(&b.m), sizeof b.m);
+  geometry_key_.append(reinterpret_cast<const char*>(&b.step), sizeof b.step);
 }
 
 uint32_t SceneBuilder::make_material(const SourceLoc&) {
@@ -109,8 +145,8 @@ ClampedValues clamp_values(std::vector<float>& values, float lo, float hi) {
   return clamped;
 }
 
-// The warning for what clamp_values changed in primitive variable `name` (`components` numbers
-// per value), e.g. "\"width\" (varying) value 3 is -0.01, negative: clamped to 0 (2 numbers clamped)".
+// The warning for what clamp_values changed in primitive variable `name`, e.g.
+// "\"width\" (varying) value 3 is -0.01, negative: clamped to 0 (2 numbers clamped)".
 std::string clamp_message(const char* name, const PrimvarInput& pv, const ClampedValues& c, const char* problem,
                           float lo, float hi) {
   const float used = std::clamp(c.first_value, lo, hi);
@@ -119,6 +155,33 @@ std::string clamp_message(const char* name, const PrimvarInput& pv, const Clampe
                                                              c.first % size_t(pv.components));
   return fmt::format("\"{}\" ({}) {} is {}, {}: clamped to {} ({} number{} clamped)", name, to_string(pv.storage),
                      which, c.first_value, problem, used, c.count, c.count == 1 ? "" : "s");
+}
+
+constexpr float kFloatMax = std::numeric_limits<float>::max();
+
+// What a Curves call clamped, and what append_curves dropped, for the warnings.
+struct CurveClamps {
+  ClampedValues widths, opacities;
+  float constant_width = 0;  // as given
+  CurvesAppended appended;
+};
+
+void report_curve_clamps(const CurveClamps& c, const CurvesInput& in, Diagnostics& diag, const SourceLoc& loc) {
+  if (c.widths.count > 0)
+    diag.warning(loc, "Curves", clamp_message("width", *in.width, c.widths, "negative", 0, kFloatMax));
+  if (c.constant_width < 0)
+    diag.warning(loc, "Curves", fmt::format("\"constantwidth\" {} is negative: clamped to 0", c.constant_width));
+  if (c.opacities.count > 0)
+    diag.warning(loc, "Curves", clamp_message("Os", *in.Os, c.opacities, "outside [0, 1]", 0, 1));
+  const size_t dropped = c.appended.segments_beyond_float_range;
+  if (dropped == 1)
+    diag.warning(loc, "Curves",
+                 fmt::format("1 segment (in curve {}) lies beyond the float range in world space: dropped",
+                             c.appended.first_curve_beyond));
+  else if (dropped > 1)
+    diag.warning(loc, "Curves",
+                 fmt::format("{} segments (the first in curve {}) lie beyond the float range in world space: dropped",
+                             dropped, c.appended.first_curve_beyond));
 }
 
 }  // namespace
@@ -132,6 +195,24 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
     throw RibError("curve type must be \"linear\" or \"cubic\", found \"" + type + "\"");
   if (wrap != "periodic" && wrap != "nonperiodic")
     throw RibError("wrap must be \"periodic\" or \"nonperiodic\", found \"" + wrap + "\"");
+  // A Curves call replayed from a cached archive with the transform, basis and colours of the
+  // last time it was built: its segments are copied (bitwise the same as building them again).
+  const uint64_t id = replayed_id();
+  note_geometry(id);
+  if (id != 0) {
+    auto it = curve_chunks_.find(id);
+    if (it != curve_chunks_.end()) {
+      CurveChunk& chunk = it->second;
+      if (chunk.ctm == ctm_ && chunk.basis.m == attributes_.vbasis.m && chunk.basis.step == attributes_.vbasis.step &&
+          chunk.color == attributes_.color && chunk.opacity == attributes_.opacity) {
+        if (!reserve_frame_memory(chunk.segments.size(), 0, 0)) return;
+        chunk.used = true;
+        scene_->curves.append(chunk.segments, make_material(loc), next_strand_id_);
+        next_strand_id_ += chunk.strands;
+        return;
+      }
+    }
+  }
   CurvesInput in;
   in.cubic = type == "cubic";
   in.periodic = wrap == "periodic";
@@ -152,28 +233,31 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
   in.default_cs = attributes_.color;
   in.default_os = attributes_.opacity;
   in.object_to_world = ctm_;
+  const CurvesTopology topology{in.cubic, in.periodic, in.basis.step, in.nvertices};
+  validate_topology(topology);
+  uint64_t segments = 0;
+  for (int nv : in.nvertices) segments += segments_in_curve(topology, nv);
+  if (!reserve_frame_memory(segments, 0, 0)) return;
   // Negative widths (a cubic width overshooting at a tip, an exporter's rounding) mean "nothing
   // there": clamped to 0, so the strand keeps its other segments. Opacity is a fraction.
-  constexpr float kHuge = std::numeric_limits<float>::max();
-  const ClampedValues widths = in.width ? clamp_values(in.width->values, 0, kHuge) : ClampedValues{};
-  const ClampedValues opacities = in.Os ? clamp_values(in.Os->values, 0, 1) : ClampedValues{};
-  const float constant_width = in.constantwidth.value_or(0);
-  if (constant_width < 0) in.constantwidth = 0.0f;
+  CurveClamps clamps;
+  clamps.widths = in.width ? clamp_values(in.width->values, 0, kFloatMax) : ClampedValues{};
+  clamps.opacities = in.Os ? clamp_values(in.Os->values, 0, 1) : ClampedValues{};
+  clamps.constant_width = in.constantwidth.value_or(0);
+  if (clamps.constant_width < 0) in.constantwidth = 0.0f;
   uint32_t material = make_material(loc);
-  const CurvesAppended appended = append_curves(scene_->curves, in, material, next_strand_id_);
+  if (id == 0) {
+    clamps.appended = append_curves(scene_->curves, in, material, next_strand_id_);
+  } else {
+    CurveChunk chunk{ctm_, attributes_.vbasis, attributes_.color, attributes_.opacity, CurveSet{}, 0, true};
+    clamps.appended = append_curves(chunk.segments, in, material, chunk.strands);
+    chunk.segments.shrink_to_fit();
+    scene_->curves.append(chunk.segments, material, next_strand_id_);
+    next_strand_id_ += chunk.strands;
+    curve_chunks_.insert_or_assign(id, std::move(chunk));
+  }
   // Warnings only once the request is known to be valid (append_curves throws for bad counts).
-  if (widths.count > 0) diag_.warning(loc, "Curves", clamp_message("width", *in.width, widths, "negative", 0, kHuge));
-  if (constant_width < 0)
-    diag_.warning(loc, "Curves", fmt::format("\"constantwidth\" {} is negative: clamped to 0", constant_width));
-  if (opacities.count > 0) diag_.warning(loc, "Curves", clamp_message("Os", *in.Os, opacities, "outside [0, 1]", 0, 1));
-  if (appended.segments_beyond_float_range > 0)
-    diag_.warning(loc, "Curves",
-                  appended.segments_beyond_float_range == 1
-                      ? fmt::format("1 segment (in curve {}) lies beyond the float range in world space: dropped",
-                                    appended.first_curve_beyond)
-                      : fmt::format("{} segments (the first in curve {}) lie beyond the float range in world space: "
-                                    "dropped",
-                                    appended.segments_beyond_float_range, appended.first_curve_beyond));
+  report_curve_clamps(clamps, in, diag_, loc);
 }
 
 void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
@@ -181,6 +265,7 @@ void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetam
   if (record([=](SceneBuilder& b) { b.sphere(radius, zmin, zmax, thetamax, params, loc); })) return;
   if (skip_motion_sample()) return;
   if (!building_geometry("Sphere", loc)) return;
+  note_geometry(replayed_id());
   if (radius == 0 || thetamax == 0) return;  // empty surface
   Sphere sphere = Sphere::make(radius, zmin, zmax, thetamax, ctm_);
   const BBox box = sphere.bounds();
@@ -188,6 +273,7 @@ void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetam
   // beyond the range is only a part of its request: those are dropped with a warning).
   if (!sphere.degenerate && !(all_finite(box.lo) && all_finite(box.hi)))
     throw RibError(fmt::format("radius {} lies beyond the float range in world space", radius));
+  if (!reserve_frame_memory(0, 1, 0)) return;
   scene_->spheres.push_back(std::move(sphere));
   scene_->sphere_material.push_back(make_material(loc));
 }
@@ -245,6 +331,8 @@ void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const s
                                 const std::vector<int>& indices, const ParamList& params, const char* request,
                                 const SourceLoc& loc) {
   if (!building_geometry(request, loc)) return;
+  note_geometry(replayed_id());
+  if (!reserve_frame_memory(0, nloops_per_face.size(), indices.size())) return;
   std::vector<float> P = read_points(params, request);
   std::vector<Vec3f> world(P.size() / 3);
   size_t beyond_float_range = 0;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <charconv>
@@ -45,7 +46,7 @@ constexpr std::array<bool, 256> make_token_byte_table() {
 }
 constexpr std::array<bool, 256> kTokenByte = make_token_byte_table();
 
-size_t token_end(const std::string& text, size_t pos) {
+size_t token_end(std::string_view text, size_t pos) {
   while (pos < text.size() && kTokenByte[static_cast<unsigned char>(text[pos])]) ++pos;
   return pos;
 }
@@ -83,7 +84,26 @@ std::string describe(const Token& token) {
 }
 
 Lexer::Lexer(std::string text, std::shared_ptr<const std::string> file)
-    : text_(std::move(text)), file_(std::move(file)) {}
+    : storage_(std::make_shared<const std::string>(std::move(text))), text_(*storage_), file_(std::move(file)) {}
+
+Lexer::Lexer(const RibTextSpan& span)
+    : storage_(span.text),
+      base_(span.begin),
+      text_(std::string_view(*span.text).substr(span.begin, span.end - span.begin)),
+      file_(span.file),
+      line_(span.line),
+      column_shift_(span.column - 1) {}
+
+RibTextSpan Lexer::span(const Token& first, size_t end_offset) const {
+  RibTextSpan out;
+  out.text = storage_;
+  out.begin = base_ + first.offset;
+  out.end = base_ + std::max(first.offset, std::min(end_offset, text_.size()));
+  out.file = file_;
+  out.line = first.line;
+  out.column = first.column;
+  return out;
+}
 
 const Token& Lexer::peek() {
   if (!has_peeked_) {
@@ -106,6 +126,7 @@ void Lexer::advance_line_break() {
   ++pos_;
   ++line_;
   line_start_ = pos_;
+  column_shift_ = 0;
 }
 
 void Lexer::skip_whitespace_and_comments() {
@@ -137,7 +158,8 @@ Token Lexer::scan() {
   if (stopped_) return token;
   skip_whitespace_and_comments();
   token.line = line_;
-  token.column = static_cast<int>(pos_ - line_start_) + 1;
+  token.column = static_cast<int>(pos_ - line_start_) + 1 + column_shift_;
+  token.offset = pos_;
   if (pos_ >= text_.size()) return token;
 
   const unsigned char c = text_[pos_];
@@ -313,6 +335,22 @@ bool read_rib_text(const std::string& path, std::string& text, std::string& erro
   if (!in) {
     error = std::strerror(errno);
     return false;
+  }
+  // Read into a buffer of the file's size: the text is the largest thing a big scene's parse
+  // holds besides its geometry, and a growing buffer would hold up to twice it for a moment.
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec) {
+    text.resize(static_cast<size_t>(size));
+    in.read(text.data(), static_cast<std::streamsize>(size));
+    const bool whole = in.gcount() == static_cast<std::streamsize>(size);
+    text.resize(static_cast<size_t>(in.gcount()));
+    // A file that grew while it was read: the rest too.
+    if (whole && !in.bad()) text.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (in.bad()) {
+      error = "read error";
+      return false;
+    }
+    return true;
   }
   std::ostringstream contents;
   contents << in.rdbuf();

@@ -22,6 +22,16 @@ struct Token {
   double number = 0;  // Number only; always finite and within float range
   int line = 0;       // 1-based
   int column = 0;     // 1-based, in bytes
+  size_t offset = 0;  // of its first byte, in the text the lexer reads
+};
+
+// A piece of RIB text to be read again later with its original positions (an inline archive's
+// body): it shares the text it was cut from, so replaying it copies nothing.
+struct RibTextSpan {
+  std::shared_ptr<const std::string> text;
+  size_t begin = 0, end = 0;  // byte range in *text
+  std::shared_ptr<const std::string> file;
+  int line = 1, column = 1;  // position of the byte at `begin`
 };
 
 // "number 3.5", "string \"abc\"", "'['", "end of file", "request name Foo": for error messages.
@@ -31,6 +41,8 @@ class Lexer {
  public:
   // `file` names the text in positions (shared by every SourceLoc made from this lexer).
   Lexer(std::string text, std::shared_ptr<const std::string> file);
+  // Reads a span cut from another text; positions are those of the original.
+  explicit Lexer(const RibTextSpan& span);
 
   // The next token without consuming it.
   const Token& peek();
@@ -43,6 +55,9 @@ class Lexer {
   // error at its position). Returns how many it appended. Call only with no token peeked.
   size_t read_numbers(std::vector<float>& out);
   const std::shared_ptr<const std::string>& file() const { return file_; }
+  // The text from `first`'s first byte up to the byte at `end_offset` (a Token::offset of this
+  // lexer), as a span that keeps `first`'s position.
+  RibTextSpan span(const Token& first, size_t end_offset) const;
 
  private:
   Token scan();
@@ -53,11 +68,14 @@ class Lexer {
   Token scan_word(Token token);
   Token error(Token token, std::string message, bool stop);
 
-  std::string text_;
+  std::shared_ptr<const std::string> storage_;  // owns the bytes text_ views
+  size_t base_ = 0;                              // offset of text_ in *storage_
+  std::string_view text_;
   std::shared_ptr<const std::string> file_;
   size_t pos_ = 0;
   size_t line_start_ = 0;  // offset of the first byte of the current line
   int line_ = 1;
+  int column_shift_ = 0;  // added to columns on the first line of a span that starts mid-line
   bool stopped_ = false;  // set after an unrecoverable error: only End follows
   bool has_peeked_ = false;
   Token peeked_;

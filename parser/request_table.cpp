@@ -1,6 +1,5 @@
 #include "parser/request_table.h"
 
-#include <algorithm>
 #include <array>
 #include <unordered_map>
 
@@ -124,13 +123,6 @@ void hider(Ctx& c) {
 
 // --- blocks ---
 
-void frame_begin(Ctx& c) {
-  // The frame number is required by the spec, but some exporters leave it out.
-  const int number = c.args.at_request_end() ? 0 : c.args.integer("the frame number");
-  c.args.expect_request_end("FrameBegin");
-  c.target.frame_begin(number, c.loc);
-}
-
 // Requests without arguments.
 template <void (RiTarget::*Call)(const SourceLoc&)>
 void no_arguments(Ctx& c) {
@@ -189,11 +181,6 @@ void coord_sys_transform(Ctx& c) {
 }
 
 // --- attributes ---
-
-void attribute(Ctx& c) {
-  const std::string category = c.args.string("the attribute category");
-  c.target.attribute(category, c.args.param_list(c.name), c.loc);
-}
 
 void orientation(Ctx& c) {
   const std::string name = c.args.string("the orientation");
@@ -322,7 +309,6 @@ Table make_table() {
       {"Quantize", quantize},
       {"Display", display},
       {"Hider", hider},
-      {"FrameBegin", frame_begin},
       {"FrameEnd", no_arguments<&RiTarget::frame_end>},
       {"WorldBegin", no_arguments<&RiTarget::world_begin>},
       {"WorldEnd", no_arguments<&RiTarget::world_end>},
@@ -339,7 +325,6 @@ Table make_table() {
       {"Perspective", perspective},
       {"CoordinateSystem", coordinate_system},
       {"CoordSysTransform", coord_sys_transform},
-      {"Attribute", attribute},
       {"Orientation", orientation},
       {"ReverseOrientation", no_arguments<&RiTarget::reverse_orientation>},
       {"Sides", sides},
@@ -394,34 +379,6 @@ RequestHandler find_request_handler(std::string_view name) {
   static const Table table = make_table();  // built once, read-only afterwards
   const auto it = table.find(name);
   return it == table.end() ? nullptr : it->second;
-}
-
-bool is_unsupported_request(std::string_view name) {
-  static constexpr std::array<std::string_view, 24> kUnsupported = {"Cone",
-                                                                    "Cylinder",
-                                                                    "Disk",
-                                                                    "Paraboloid",
-                                                                    "Hyperboloid",
-                                                                    "Torus",
-                                                                    "Patch",
-                                                                    "PatchMesh",
-                                                                    "NuPatch",
-                                                                    "TrimCurve",
-                                                                    "Points",
-                                                                    "SubdivisionMesh",
-                                                                    "Blobby",
-                                                                    "Procedural",
-                                                                    "Geometry",
-                                                                    "SolidBegin",
-                                                                    "SolidEnd",
-                                                                    "MakeLatLongEnvironment",
-                                                                    "MakeCubeFaceEnvironment",
-                                                                    "MakeBump",
-                                                                    "Deformation",
-                                                                    "Resource",
-                                                                    "ResourceBegin",
-                                                                    "ResourceEnd"};
-  return std::find(kUnsupported.begin(), kUnsupported.end(), name) != kUnsupported.end();
 }
 
 }  // namespace darc

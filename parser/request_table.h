@@ -1,6 +1,8 @@
 // The dispatch table from RIB request names to the functions that read their arguments and
-// call the RiTarget. Requests that need the parser's own state (Declare, Option's search path,
-// ReadArchive) are handled by RibParser itself and are not in this table.
+// call the RiTarget. Requests that need the parser's own state (Declare; Option, Attribute and
+// FrameBegin, which conditions refer to; ReadArchive, ArchiveBegin, IfBegin, ...) are
+// handled by RibParser itself and are not in this table; known_requests.h lists the requests
+// darc does not implement.
 #pragma once
 
 #include <string>
@@ -22,9 +24,5 @@ using RequestHandler = void (*)(RequestContext&);
 
 // The handler of `name`, or nullptr when the table does not know it.
 RequestHandler find_request_handler(std::string_view name);
-
-// Standard RI requests that darc does not model at all (Cylinder, NuPatch, ...): skipped with
-// one warning each, like unknown names, but with a message that says they are valid RIB.
-bool is_unsupported_request(std::string_view name);
 
 }  // namespace darc

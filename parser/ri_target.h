@@ -11,6 +11,7 @@
 #include "parser/source_loc.h"
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,11 @@ struct BasisArg {
 class RiTarget {
  public:
   virtual ~RiTarget() = default;
+
+  // The parser calls this before each call it replays from its archive cache with a number
+  // unique, for the run, to that recorded call, and with 0 after it: the same number means the
+  // same request with the same arguments, so a target may reuse what it built from it before.
+  virtual void replayed_request(uint64_t id) { (void)id; }
 
   virtual void version(double v, const SourceLoc& loc) = 0;
   virtual void declare(const std::string& name, const std::string& declaration, const SourceLoc& loc) = 0;
@@ -108,6 +114,10 @@ class RiTarget {
   virtual void points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                                        const std::vector<int>& indices, const ParamList& params,
                                        const SourceLoc& loc) = 0;
+  // A geometric primitive request that darc knows but does not implement (Cylinder,
+  // SubdivisionMesh, Procedural2, ...: known_requests.h): the parser has warned and skips its
+  // arguments. It lets a target tell a frame whose every primitive was skipped from an empty one.
+  virtual void skipped_primitive(const std::string& request, const SourceLoc& loc) = 0;
 };
 
 }  // namespace darc

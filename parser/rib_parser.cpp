@@ -3,11 +3,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
 
+#include "parser/condition_expression.h"
 #include "parser/error_handler.h"
+#include "parser/known_requests.h"
 #include "parser/lexer.h"
 #include "parser/request_table.h"
 
@@ -20,6 +24,20 @@ namespace fs = std::filesystem;
 // ReadArchive nesting limit: far deeper than any real scene, and stops runaway recursion
 // through distinct files (a cycle through the same file is caught separately).
 constexpr size_t kMaxArchiveDepth = 64;
+// Inline archive reads in one parse (refused ones included) and the bytes of the bodies read: an
+// archive that reads another twice, 64 levels deep, is a 3 kB file that would take 2^64 replays.
+// At about 3 us a read, the cap costs a second (the fuzzer allows 10 s per input); a crowd of
+// 100 000 instances of an inline archive stays below it. Past either cap, ReadArchive of an
+// inline archive is an error.
+constexpr std::uint64_t kMaxInlineReplays = 250'000;
+constexpr std::uint64_t kMaxInlineReplayedBytes = std::uint64_t(1) << 30;
+
+// PRMan's "archive.zip!member.rib": a member of a zip file.
+bool is_zip_member(const std::string& name) {
+  std::string lower(name);
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return lower.find(".zip!") != std::string::npos;
+}
 
 std::string canonical_name(const std::string& path) {
   std::error_code ec;
@@ -80,6 +98,18 @@ void RibParser::parse_text(std::string text, const std::string& name) {
 
 void RibParser::parse_requests(Lexer& lexer) {
   RequestReader args(lexer, declared_, diag_);
+  TextScope scope{lexer, {}};
+  TextScope* const enclosing = scope_;
+  scope_ = &scope;
+  read_requests(scope, args);
+  scope_ = enclosing;
+  if (diag_.aborted()) return;
+  for (const SourceLoc& open : scope.conditionals.open_blocks())
+    diag_.error(open, "IfBegin", "conditional block is never closed (IfEnd missing)");
+}
+
+void RibParser::read_requests(TextScope& scope, RequestReader& args) {
+  Lexer& lexer = scope.lexer;
   while (true) {
     if (diag_.aborted()) return;  // ErrorHandler "abort": nothing after the first error is read
     const Token& token = lexer.peek();
@@ -97,6 +127,11 @@ void RibParser::parse_requests(Lexer& lexer) {
     const Token name = lexer.next();
     const SourceLoc loc = lexer.loc(name);
     try {
+      if (conditional(name.text, args, loc)) continue;
+      if (!scope.conditionals.active()) {
+        skip_to_next_request(lexer);  // a branch not taken
+        continue;
+      }
       dispatch(name.text, args, loc);
     } catch (const RibSyntaxError& e) {
       diag_.error(e.loc, name.text, e.what());
@@ -120,16 +155,27 @@ void RibParser::skip_to_next_request(Lexer& lexer) {
 
 void RibParser::dispatch(const std::string& request, RequestReader& args, const SourceLoc& loc) {
   if (request == "ReadArchive") return read_archive(args);
+  if (request == "ArchiveBegin") return archive_begin(args, loc);
+  if (request == "ArchiveEnd") throw RibError("ArchiveEnd without ArchiveBegin");
   if (request == "Declare") return declare(args, loc);
   if (request == "Option") return option(args, loc);
+  if (request == "Attribute") return attribute(args, loc);
+  if (request == "FrameBegin") return frame_begin(args, loc);
   if (request == "ErrorHandler") return error_handler(args, loc);
   if (RequestHandler handler = find_request_handler(request)) {
     RequestContext context{args, target_, loc, request};
-    return handler(context);
+    handler(context);
+    track_block(request);
+    return;
   }
-  if (is_unsupported_request(request)) {
+  dispatch_unimplemented(request, args, loc);
+}
+
+void RibParser::dispatch_unimplemented(const std::string& request, RequestReader& args, const SourceLoc& loc) {
+  if (const std::optional<KnownRequest> known = find_known_request(request)) {
     diag_.warning_once("unsupported request " + request, loc, request,
-                       fmt::format("unsupported request \"{}\": skipped", request));
+                       fmt::format("request \"{}\" ({}) is not supported: skipped", request, describe(known->origin)));
+    if (known->kind == RequestKind::Geometry) target_.skipped_primitive(request, loc);
   } else {
     diag_.warning_once("unknown request " + request, loc, request,
                        fmt::format("unknown request \"{}\": skipped", request));
@@ -138,6 +184,76 @@ void RibParser::dispatch(const std::string& request, RequestReader& args, const 
   std::vector<double> numbers;
   std::vector<std::string> strings;
   args.flatten_rest(numbers, strings);
+}
+
+void RibParser::track_block(const std::string& request) {
+  if (request == "FrameEnd") conditions_.frame_end();
+  else if (request == "WorldBegin") conditions_.world_begin();
+  else if (request == "WorldEnd") conditions_.world_end();
+  else if (request == "AttributeBegin") conditions_.attribute_begin();
+  else if (request == "AttributeEnd") conditions_.attribute_end();
+}
+
+bool RibParser::conditional(const std::string& request, RequestReader& args, const SourceLoc& loc) {
+  if (request == "IfBegin" || request == "ElseIf" || request == "Else" || request == "IfEnd") read_parser_state_ = true;
+  ConditionalBlocks& blocks = scope_->conditionals;
+  if (request == "IfBegin" || request == "ElseIf") {
+    // A malformed IfBegin or ElseIf still opens its branch (as one whose condition cannot be
+    // evaluated), so that the rest of the block keeps its structure.
+    std::string expression;
+    bool readable = true;
+    std::optional<RibSyntaxError> error;
+    try {
+      expression = args.string("the condition");
+      args.skip_param_list(request);
+    } catch (const RibSyntaxError& e) {
+      readable = false;
+      error = e;
+    }
+    const auto condition = [&] { return !readable || condition_holds(expression, loc, request); };
+    if (request == "IfBegin") {
+      blocks.if_begin(loc, condition);
+    } else {
+      blocks.else_if(condition);
+    }
+    if (error) throw *error;
+    return true;
+  }
+  // The block changes before stray arguments are reported, so that they do not break it.
+  if (request == "Else") {
+    blocks.else_branch();
+    args.expect_request_end("Else");
+    return true;
+  }
+  if (request == "IfEnd") {
+    blocks.if_end();
+    args.expect_request_end("IfEnd");
+    return true;
+  }
+  return false;
+}
+
+bool RibParser::condition_holds(const std::string& expression, const SourceLoc& loc, const std::string& request) {
+  const ConditionOutcome outcome =
+      evaluate_condition(expression, [this](std::string_view name) { return conditions_.lookup(name); });
+  if (outcome.evaluated()) return outcome.value;
+  diag_.warning_once("condition " + expression, loc, request,
+                     fmt::format("cannot evaluate \"{}\" ({}): this branch is taken, no later one of its block",
+                                 expression, outcome.failure));
+  return true;
+}
+
+void RibParser::archive_begin(RequestReader& args, const SourceLoc& loc) {
+  read_parser_state_ = true;
+  const std::string name = args.string("the archive name");
+  args.skip_param_list("ArchiveBegin");
+  Lexer& lexer = scope_->lexer;
+  const ArchiveBodyScan scan = scan_archive_body(lexer);
+  if (!scan.closed) {
+    if (scan.lexical_error) diag_.error(lexer.loc(*scan.lexical_error), "", scan.lexical_error->text);
+    throw RibError(fmt::format("archive \"{}\" is never closed (ArchiveEnd missing)", name));
+  }
+  inline_archives_.define(name, InlineArchive{scan.body, loc});
 }
 
 void RibParser::declare(RequestReader& args, const SourceLoc& loc) {
@@ -164,6 +280,22 @@ void RibParser::option(RequestReader& args, const SourceLoc& loc) {
     }
   }
   target_.option(category, params, loc);
+  conditions_.option(category, params);
+}
+
+void RibParser::attribute(RequestReader& args, const SourceLoc& loc) {
+  const std::string category = args.string("the attribute category");
+  const ParamList params = args.param_list("Attribute");
+  target_.attribute(category, params, loc);
+  conditions_.attribute(category, params);
+}
+
+void RibParser::frame_begin(RequestReader& args, const SourceLoc& loc) {
+  // The frame number is required by the spec, but some exporters leave it out.
+  const int number = args.at_request_end() ? 0 : args.integer("the frame number");
+  args.expect_request_end("FrameBegin");
+  target_.frame_begin(number, loc);
+  conditions_.frame_begin(number);
 }
 
 void RibParser::error_handler(RequestReader& args, const SourceLoc& loc) {
@@ -201,13 +333,12 @@ std::string RibParser::resolve_archive(const std::string& name) const {
 void RibParser::read_archive(RequestReader& args) {
   const std::string name = args.string("the archive name");
   args.expect_request_end("ReadArchive");
+  if (const InlineArchive* archive = inline_archives_.find(name)) return replay_inline_archive(name, *archive);
+  if (is_zip_member(name))
+    throw RibError(fmt::format("cannot read archive \"{}\": zip archive members are not supported", name));
   if (!archive_files_allowed_) throw RibError(fmt::format("cannot open archive \"{}\": file access is disabled", name));
   const std::string path = resolve_archive(name);
-  std::string text;
-  std::string reason;
-  if (!is_readable_file(path) || !read_rib_text(path, text, reason)) {
-    throw RibError(fmt::format("cannot open archive \"{}\"", name));
-  }
+  if (!is_readable_file(path)) throw RibError(fmt::format("cannot open archive \"{}\"", name));
   const std::string canonical = canonical_name(path);
   if (std::find(include_stack_.begin(), include_stack_.end(), canonical) != include_stack_.end()) {
     throw RibError(fmt::format("archive \"{}\" includes itself (cycle through {})", name, canonical));
@@ -215,7 +346,132 @@ void RibParser::read_archive(RequestReader& args) {
   if (include_stack_.size() >= kMaxArchiveDepth) {
     throw RibError(fmt::format("archive \"{}\" is nested deeper than {} levels", name, kMaxArchiveDepth));
   }
+  if (archive_cache_) return include_cached_archive(path, canonical);
+  std::string text;
+  std::string reason;
+  if (!read_rib_text(path, text, reason)) throw RibError(fmt::format("cannot open archive \"{}\"", name));
   parse_text(std::move(text), path);
+}
+
+void RibParser::include_cached_archive(const std::string& path, const std::string& canonical) {
+  std::shared_ptr<const RecordedArchive> archive = archive_cache_->find(canonical, declared_, archive_path_);
+  if (archive) {
+    archive_cache_->count_replay();
+  } else {
+    std::string text;
+    std::string reason;
+    const std::optional<FileStamp> stamp = stamp_file(path);
+    if (!read_rib_text(path, text, reason)) throw RibError(fmt::format("cannot open archive \"{}\"", path));
+    std::optional<RecordedArchive> recorded = record_archive(text, path);
+    if (!recorded) {
+      // Not replayable: parse it as without a cache (the file was read once more for nothing).
+      if (recorded_files_ && stamp) recorded_files_->push_back(*stamp);
+      parse_text(std::move(text), path);
+      return;
+    }
+    archive = archive_cache_->store(canonical, std::move(*recorded));
+  }
+  if (recorded_files_) recorded_files_->insert(recorded_files_->end(), archive->files.begin(), archive->files.end());
+  replay(*archive);
+}
+
+std::optional<RecordedArchive> RibParser::record_archive(std::string text, const std::string& path) {
+  RecordedArchive archive;
+  if (std::optional<FileStamp> stamp = stamp_file(path)) archive.files.push_back(*stamp);
+  archive.declarations_before = declared_;
+  archive.search_path_before = archive_path_;
+  int64_t errors_kept = 0;
+  bool replayable = true;
+  // The archive's own parser: the same state as this one, a target that records, and
+  // diagnostics that are recorded too (shown when replayed, so each frame that reads the
+  // archive gets its errors, as without the cache).
+  Diagnostics recorded_diag([&](const Diagnostic& d) {
+    if (d.severity == Severity::Error) ++errors_kept;
+    archive.events.push_back(RecordedArchive::Event{{}, d});
+  });
+  CallRecorder recorder([&](CallRecorder::Entry call) {
+    if (call.request == "ErrorHandler") replayable = false;  // it changes this parser's diagnostics
+    archive.events.push_back(RecordedArchive::Event{std::move(call), std::nullopt});
+  });
+  RibParser child(recorder, recorded_diag);
+  child.declared_ = declared_;
+  child.archive_path_ = archive_path_;
+  child.include_stack_ = include_stack_;
+  child.archive_files_allowed_ = archive_files_allowed_;
+  child.archive_cache_ = archive_cache_;
+  child.recorded_files_ = &archive.files;
+  child.inline_archives_ = inline_archives_;
+  child.inline_stack_ = inline_stack_;
+  child.conditions_ = conditions_;
+  child.parse_text(std::move(text), path);
+  // Past the message caps some errors were counted but not recorded: a replay would lose them.
+  if (!replayable || errors_kept != recorded_diag.error_count()) return std::nullopt;
+  // Conditional RIB and inline archives depend on (or change) this parser's state of the
+  // moment ($Frame, the archives defined so far): such an archive is parsed at each read.
+  if (child.read_parser_state_) return std::nullopt;
+  archive.declarations_after = std::move(child.declared_);
+  archive.search_path_after = std::move(child.archive_path_);
+  return archive;
+}
+
+void RibParser::replay(const RecordedArchive& archive) {
+  for (size_t i = 0; i < archive.events.size(); ++i) {
+    const RecordedArchive::Event& e = archive.events[i];
+    if (diag_.aborted()) return;
+    if (e.diagnostic) {
+      const Diagnostic& d = *e.diagnostic;
+      if (d.severity == Severity::Error) {
+        diag_.error(d.loc, d.request, d.message);
+      } else {
+        // Warnings once per run, as when the archive is parsed each time with one Diagnostics.
+        diag_.warning_once("archive " + d.loc.str() + " " + d.message, d.loc, d.request, d.message);
+      }
+      continue;
+    }
+    target_.replayed_request(archive.request_id(i));
+    try {
+      e.call.call(target_);
+      // What conditional RIB can refer to, as the requests' own handlers keep it.
+      const std::string& r = e.call.request;
+      if (r == "FrameBegin") conditions_.frame_begin(e.call.number);
+      else if (r == "Option" && e.call.params) conditions_.option(e.call.category, *e.call.params);
+      else if (r == "Attribute" && e.call.params) conditions_.attribute(e.call.category, *e.call.params);
+      else track_block(r);
+    } catch (const RibError& err) {
+      diag_.error(e.call.loc, e.call.request, err.what());
+    }
+    target_.replayed_request(0);
+  }
+  declared_ = archive.declarations_after;
+  archive_path_ = archive.search_path_after;
+}
+
+void RibParser::replay_inline_archive(const std::string& name, const InlineArchive& archive) {
+  read_parser_state_ = true;
+  const std::uint64_t bytes = archive.body.end - archive.body.begin;
+  if (inline_replays_ >= kMaxInlineReplays || inline_replayed_bytes_ + bytes > kMaxInlineReplayedBytes) {
+    throw RibError(fmt::format("inline archive \"{}\" not read: this run has read inline archives {} times ({} "
+                               "bytes), the limit is {} reads or {} bytes (archives that read each other many "
+                               "times over?)",
+                               name, inline_replays_, inline_replayed_bytes_, kMaxInlineReplays,
+                               kMaxInlineReplayedBytes));
+  }
+  // Every attempt counts, refused ones too: they are work as well.
+  ++inline_replays_;
+  inline_replayed_bytes_ += bytes;
+  if (std::find(inline_stack_.begin(), inline_stack_.end(), name) != inline_stack_.end()) {
+    throw RibError(fmt::format("inline archive \"{}\" (ArchiveBegin at {}) includes itself", name,
+                               archive.defined_at.str()));
+  }
+  if (include_stack_.size() + inline_stack_.size() >= kMaxArchiveDepth) {
+    throw RibError(fmt::format("archive \"{}\" is nested deeper than {} levels", name, kMaxArchiveDepth));
+  }
+  // The lexer shares the body's text: a redefinition of the archive during the replay does
+  // not pull it away.
+  Lexer lexer(archive.body);
+  inline_stack_.push_back(name);
+  parse_requests(lexer);
+  inline_stack_.pop_back();
 }
 
 }  // namespace darc

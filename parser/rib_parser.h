@@ -1,16 +1,25 @@
 // The RIB reader: reads ASCII RIB (plain, gzip or standard input), dispatches each request to
 // an RiTarget and reports every error and warning with its file:line:column to Diagnostics,
 // recovering at the next request so that one run reports all errors. ReadArchive is inlined
-// here (the target never sees it), searching the including file's directory and then
-// Option "searchpath" "archive". ErrorHandler is applied here, to the Diagnostics, from the
-// next request on (error_handler.h); under "abort" parsing stops at the first error.
+// here (the target never sees it): an inline archive of that name (ArchiveBegin/ArchiveEnd,
+// inline_archives.h) first, else a file searched in the including file's directory and then
+// Option "searchpath" "archive". Conditional RIB (IfBegin/ElseIf/Else/IfEnd) is evaluated
+// here too (condition_expression.h): the target sees the requests of the branches taken only.
+// ErrorHandler is applied here, to the Diagnostics, from the next request on
+// (error_handler.h); under "abort" parsing stops at the first error.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "parser/archive_cache.h"
+#include "parser/condition_variables.h"
+#include "parser/conditional_blocks.h"
 #include "parser/diagnostics.h"
+#include "parser/inline_archives.h"
 #include "parser/request_reader.h"
 #include "parser/ri_target.h"
 
@@ -36,23 +45,66 @@ class RibParser {
   // and no file is looked up or opened: for input that must not reach the file system (fuzzing).
   void allow_archive_files(bool allowed) { archive_files_allowed_ = allowed; }
 
+  // Parse each archive once and replay it from `cache` at later ReadArchives of it (nullptr,
+  // the default: every ReadArchive reads and parses its file). The cache must outlive the parser;
+  // one cache serves every parser of a run.
+  void use_archive_cache(ArchiveCache* cache) { archive_cache_ = cache; }
+
  private:
+  // What is being read: one file's text or one inline archive's body. Conditional blocks must
+  // close in the text that opened them.
+  struct TextScope {
+    Lexer& lexer;
+    ConditionalBlocks conditionals;
+  };
+
   void parse_text(std::string text, const std::string& name);
   void parse_requests(Lexer& lexer);
+  void read_requests(TextScope& scope, RequestReader& args);
   void dispatch(const std::string& request, RequestReader& args, const SourceLoc& loc);
+  // A request the table does not have: "not supported" when a RenderMan document has it, else
+  // "unknown"; one warning per name, the arguments skipped.
+  void dispatch_unimplemented(const std::string& request, RequestReader& args, const SourceLoc& loc);
   void skip_to_next_request(Lexer& lexer);
   void read_archive(RequestReader& args);
+  void replay_inline_archive(const std::string& name, const InlineArchive& archive);
+  void archive_begin(RequestReader& args, const SourceLoc& loc);
   void declare(RequestReader& args, const SourceLoc& loc);
   void option(RequestReader& args, const SourceLoc& loc);
+  void attribute(RequestReader& args, const SourceLoc& loc);
+  void frame_begin(RequestReader& args, const SourceLoc& loc);
   void error_handler(RequestReader& args, const SourceLoc& loc);
+  // IfBegin, ElseIf, Else, IfEnd. Returns false when `request` is none of them.
+  bool conditional(const std::string& request, RequestReader& args, const SourceLoc& loc);
+  // The value of a branch's condition; true, with a warning, when it cannot be evaluated.
+  bool condition_holds(const std::string& expression, const SourceLoc& loc, const std::string& request);
+  // Keeps conditions_ in step with the block requests the target accepted.
+  void track_block(const std::string& request);
   std::string resolve_archive(const std::string& name) const;
+  // ReadArchive through the cache: replays the file's entry, or parses the file into one (or,
+  // for an archive whose parse cannot be replayed, parses it straight into the target).
+  void include_cached_archive(const std::string& path, const std::string& canonical);
+  // Parses `text` of the archive `path` into a recording; nullopt when the recording could not
+  // reproduce the parse (an ErrorHandler inside, or more errors than were shown).
+  std::optional<RecordedArchive> record_archive(std::string text, const std::string& path);
+  void replay(const RecordedArchive& archive);
 
   RiTarget& target_;
   Diagnostics& diag_;
   DeclarationMap declared_;
   std::vector<std::string> archive_path_;
   std::vector<std::string> include_stack_;  // files being read, outermost first (canonical paths)
+  std::vector<std::string> inline_stack_;   // inline archives being replayed, outermost first
+  InlineArchiveStore inline_archives_;
+  std::uint64_t inline_replays_ = 0, inline_replayed_bytes_ = 0;  // in this parse, against the caps
+  ConditionVariables conditions_;
+  TextScope* scope_ = nullptr;  // the innermost text being read
   bool archive_files_allowed_ = true;
+  ArchiveCache* archive_cache_ = nullptr;
+  // While this parser records an archive for the cache: the files the recording depends on.
+  std::vector<FileStamp>* recorded_files_ = nullptr;
+  // Conditional RIB or inline archives were used (the archive cache does not replay such text).
+  bool read_parser_state_ = false;
 };
 
 }  // namespace darc

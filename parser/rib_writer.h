@@ -83,6 +83,8 @@ class RibWriter : public RiTarget {
                        const ParamList& params, const SourceLoc& loc) override;
   void points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                                const std::vector<int>& indices, const ParamList& params, const SourceLoc& loc) override;
+  // Not written: the parser has already warned, and its arguments are gone.
+  void skipped_primitive(const std::string&, const SourceLoc&) override {}
 
  private:
   // Starts a request line at the current indentation.

@@ -65,6 +65,40 @@ TEST(CliRenderOptions, StatsHoldOneEntryPerFrameWithSaneCounters) {
   }
 }
 
+// "--stats s.####.json": one file per rendered frame, each holding that frame's entry alone, so
+// that the frames of a sequence (a farm's tasks) each leave their own record.
+TEST(CliRenderOptions, StatsWithAFramePatternWriteOneFilePerFrame) {
+  ScratchDir dir("stats-per-frame");
+  write_file(dir / "seq.rib", tiny_frame_rib(1, "f#.exr") + tiny_frame_rib(2, "f#.exr") + tiny_frame_rib(3, "f#.exr"));
+  RunResult r = run_darc(dir.path(), "--frames 1,3 --stats s.####.json seq.rib");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(file_names(dir.path()), (std::vector<std::string>{"f1.exr", "f3.exr", "s.0001.json", "s.0003.json",
+                                                               "seq.rib", "stderr.txt", "stdout.txt"}))
+      << "frame 2 is not selected; no temporary file is left";
+  for (int frame : {1, 3}) {
+    SCOPED_TRACE("frame " + std::to_string(frame));
+    nlohmann::json stats;
+    ASSERT_NO_THROW(stats = nlohmann::json::parse(read_text_file(dir / ("s.000" + std::to_string(frame) + ".json"))));
+    ASSERT_EQ(stats["frames"].size(), 1u);
+    EXPECT_EQ(stats["frames"][0]["frame"], frame);
+    EXPECT_EQ(stats["frames"][0]["output"], "f" + std::to_string(frame) + ".exr");
+  }
+}
+
+// A frame --skip-existing skips is not rendered, so it writes no stats: the file of the run that
+// rendered it is kept as it was (here: removed, and not written again).
+TEST(CliRenderOptions, SkippedFramesWriteNoPerFrameStats) {
+  ScratchDir dir("stats-skip");
+  write_file(dir / "seq.rib", tiny_frame_rib(1, "f#.exr") + tiny_frame_rib(2, "f#.exr"));
+  ASSERT_EQ(run_darc(dir.path(), "--stats s.#.json seq.rib").exit_code, 0);
+  fs::remove(dir / "s.1.json");
+  fs::remove(dir / "f2.exr");
+  RunResult r = run_darc(dir.path(), "--skip-existing --stats s.#.json seq.rib");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "s.1.json")) << "frame 1 was skipped";
+  EXPECT_TRUE(fs::exists(dir / "s.2.json")) << "frame 2 was rendered again";
+}
+
 TEST(CliRenderOptions, PixelSamplesOverridesPixelSamples) {
   ScratchDir dir("pixel-samples");
   write_file(dir / "scene.rib", tiny_frame_rib(1, "out.exr"));

@@ -389,6 +389,10 @@ class ParameterValidation : public ::testing::TestWithParam<Row> {};
 TEST_P(ParameterValidation, ReportsAndBuildsAsTheTableDecides) {
   const Row& row = GetParam();
   Built b = build(row.rib);
+  // Most rows' frames hold no primitive, which WorldEnd reports on its own: not the row's business.
+  std::erase_if(b.diagnostics, [](const Diagnostic& d) {
+    return d.request == "WorldEnd" && d.message.starts_with("nothing renderable in frame");
+  });
   ASSERT_EQ(b.scenes.size(), 1u) << "the frame is still built";
   if (!row.expected) {
     for (const Diagnostic& d : b.diagnostics) ADD_FAILURE() << "a valid value gave " << d.str();

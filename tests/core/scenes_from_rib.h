@@ -19,7 +19,7 @@ struct Built {
   std::vector<Diagnostic> diagnostics;
 };
 
-inline Built build(const std::string& rib, std::function<bool(int)> selected = {}) {
+inline Built build(const std::string& rib, std::function<bool(int)> selected = {}, FrameOverrides overrides = {}) {
   Built out;
   Diagnostics diag([&](const Diagnostic& d) { out.diagnostics.push_back(d); });
   SceneBuilder::Callbacks cb;
@@ -29,7 +29,7 @@ inline Built build(const std::string& rib, std::function<bool(int)> selected = {
     out.frame_errors.push_back(diag.frame_errors());
   };
   cb.frame_failed = [&](int f) { out.failed.push_back(f); };
-  SceneBuilder builder(diag, cb);
+  SceneBuilder builder(diag, cb, overrides);
   RibParser parser(builder, diag);
   parser.parse_string(rib, "test.rib");
   builder.finish(SourceLoc{});

@@ -182,6 +182,9 @@ class RecordingTarget : public RiTarget {
     n.insert(n.end(), idx.begin(), idx.end());
     add("PointsGeneralPolygons", n, {}, p, loc);
   }
+  // Kept apart from `calls`: they are not requests the target models.
+  std::vector<std::string> skipped_primitives;
+  void skipped_primitive(const std::string& r, const SourceLoc&) override { skipped_primitives.push_back(r); }
 
  private:
   void add(const std::string& request, std::vector<double> numbers, std::vector<std::string> strings,

@@ -127,6 +127,30 @@ TEST(RibFiles, ArchiveCycleIsAnError) {
   EXPECT_EQ(r->target.named("Sides").size(), 2u);
 }
 
+TEST(RibFiles, AnInlineArchiveTakesPrecedenceOverAFileOfTheSameName) {
+  TempDir dir;
+  dir.write("part.rib", "Sides 2\n");
+  const std::string main =
+      dir.write("main.rib", "ArchiveBegin \"part.rib\" Sides 1 ArchiveEnd\nReadArchive \"part.rib\"\n");
+  auto r = parse_file(main);
+  EXPECT_TRUE(r->ok);
+  const auto sides = r->target.named("Sides");
+  ASSERT_EQ(sides.size(), 1u);
+  EXPECT_EQ(sides[0].numbers[0], 1) << "as in PRMan, the inline archive is read, not the file";
+}
+
+TEST(RibFiles, ZipArchiveMembersAreAClearError) {
+  TempDir dir;
+  dir.write("assets.zip", "PK");
+  const std::string main = dir.write("main.rib", "ReadArchive \"assets.zip!hair.rib\"\nSides 1\n");
+  auto r = parse_file(main);
+  ASSERT_EQ(r->diag.error_count(), 1);
+  EXPECT_EQ(r->diag.all()[0].message,
+            "cannot read archive \"assets.zip!hair.rib\": zip archive members are not supported");
+  EXPECT_EQ(r->diag.all()[0].loc.line, 1);
+  EXPECT_EQ(r->target.named("Sides").size(), 1u);
+}
+
 TEST(RibFiles, GzipFilesAreDecompressed) {
   TempDir dir;
   const std::string path = (dir.path() / "scene.rib.gz").string();

@@ -1,0 +1,36 @@
+// End-to-end: a frame whose every primitive darc skips still renders (an empty image, exit code
+// 0: nothing in it is an error), but darc says so on stderr instead of writing black silently.
+#include "render/render_test_util.h"
+
+namespace darc::test {
+namespace {
+
+TEST(Cli, AFrameOfUnsupportedPrimitivesWarnsNothingRenderableAndExitsZero) {
+  ScratchDir dir("nothing-renderable");
+  write_file(dir / "scene.rib", R"RIB(FrameBegin 3
+Display "out.exr" "file" "rgba"
+Format 16 12 1
+PixelSamples 1 1
+Projection "perspective" "fov" [40]
+Translate 0 0 5
+WorldBegin
+  SubdivisionMesh "catmull-clark" [4] [0 1 2 3] [] [] [] [] "P" [-1 -1 0  1 -1 0  1 1 0  -1 1 0]
+  Cylinder 1 -1 1 360
+WorldEnd
+FrameEnd
+)RIB");
+  RunResult r = run_darc(dir.path(), "scene.rib");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("scene.rib:10:1: warning: WorldEnd: nothing renderable in frame 3: every primitive in it is "
+                       "of a kind darc does not support (Cylinder, SubdivisionMesh)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("scene.rib:8:3: warning: SubdivisionMesh: request \"SubdivisionMesh\" (RI Spec 3.2) is not "
+                       "supported: skipped"),
+            std::string::npos)
+      << r.err;
+  EXPECT_TRUE(fs::exists(dir / "out.exr")) << "the frame is still written";
+}
+
+}  // namespace
+}  // namespace darc::test

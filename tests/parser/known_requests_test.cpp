@@ -1,0 +1,71 @@
+// Request names: those of the RI Spec and RenderMan that darc does not implement are "not
+// supported" (one warning per name, with its position), other names are "unknown".
+#include "parser/known_requests.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "recording_target.h"
+
+namespace darc::test {
+namespace {
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+TEST(KnownRequests, RenderManRequestsAreNotSupportedNotUnknown) {
+  auto r = parse_rib(R"RIB(Bxdf "PxrDisney" "base" "float metallic" [1]
+Pattern "PxrTexture" "tex" "string filename" ["a.tex"]
+Bxdf "PxrSurface" "s2"
+Integrator "PxrPathTracer" "pt"
+  Light "PxrRectLight" "key" "float intensity" [4]
+DisplayChannel "color Ci"
+Camera "main"
+Procedural2 "DynamicLoad" "SubdivisionMesh" "string dsoname" ["x"]
+Resource "r" "attributes" "string operation" ["save"]
+Frobnicate 1 2
+WorldBegin
+)RIB");
+  EXPECT_TRUE(r->ok) << "a request darc does not support is a warning";
+  const auto warnings = r->warnings();
+  ASSERT_EQ(warnings.size(), 9u) << "one warning per request name";
+  EXPECT_EQ(warnings[0].message, "request \"Bxdf\" (RenderMan 19+ RIB) is not supported: skipped");
+  EXPECT_EQ(warnings[0].loc.str(), "test.rib:1:1");
+  EXPECT_EQ(warnings[0].request, "Bxdf");
+  EXPECT_EQ(warnings[3].request, "Light");
+  EXPECT_EQ(warnings[3].loc.str(), "test.rib:5:3");
+  EXPECT_EQ(warnings[4].message, "request \"DisplayChannel\" (RI Spec 3.4 / PRMan) is not supported: skipped");
+  EXPECT_EQ(warnings[8].message, "unknown request \"Frobnicate\": skipped");
+  ASSERT_EQ(r->target.calls.size(), 1u) << "their arguments are skipped";
+  EXPECT_EQ(r->target.calls[0].request, "WorldBegin");
+}
+
+TEST(KnownRequests, SkippedPrimitivesAreToldToTheTarget) {
+  auto r = parse_rib(
+      "WorldBegin\nCylinder 1 0 1 360\nBxdf \"PxrDiffuse\" \"d\"\nSubdivisionMesh \"catmull-clark\" [4] "
+      "[0 1 2 3] [] [] [] [] \"P\" [0 0 0 1 0 0 1 1 0 0 1 0]\nCylinder 2 0 1 360\nWorldEnd\n");
+  EXPECT_EQ(r->target.skipped_primitives, (std::vector<std::string>{"Cylinder", "SubdivisionMesh", "Cylinder"}))
+      << "geometry only, and every call (the warning is once per name)";
+  const auto warnings = r->warnings();
+  ASSERT_EQ(warnings.size(), 3u);
+  EXPECT_EQ(warnings[0].message, "request \"Cylinder\" (RI Spec 3.2) is not supported: skipped");
+}
+
+TEST(KnownRequests, NoKnownNameIsReportedUnknown) {
+  for (const KnownRequest& known : known_requests()) {
+    SCOPED_TRACE(std::string(known.name));
+    auto r = parse_rib(std::string(known.name) + "\n");
+    for (const Diagnostic& d : r->diag.all()) EXPECT_FALSE(contains(d.message, "unknown request")) << d.str();
+  }
+}
+
+TEST(KnownRequests, TheTableHasEachNameOnce) {
+  std::set<std::string_view> names;
+  for (const KnownRequest& known : known_requests()) EXPECT_TRUE(names.insert(known.name).second) << known.name;
+  EXPECT_GT(names.size(), 130u);
+  EXPECT_FALSE(find_known_request("bxdf").has_value()) << "RIB request names are case-sensitive";
+  EXPECT_EQ(find_known_request("Procedural2")->kind, RequestKind::Geometry);
+}
+
+}  // namespace
+}  // namespace darc::test
