@@ -211,6 +211,8 @@ std::vector<Row> attribute_rows() {
        }},
       {"basis-step", in_world("Basis \"bezier\" 0 \"bezier\" 3"),
        error(2, "Basis", "basis step must be at least 1, found 0"), [](const Scene&) {}},
+      {"ri-basisstep", in_world("Attribute \"Ri\" \"int[2] BasisStep\" [0 1]"),
+       error(2, "Attribute", "basis step must be at least 1, found 0"), [](const Scene&) {}},
       {"basis-matrix",
        in_world("Basis [0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0] 1 [0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0] 1\n"
                 "Curves \"cubic\" [4] \"nonperiodic\" \"P\" [0 0 0  1 0 0  2 0 0  3 0 0]"),
