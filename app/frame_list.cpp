@@ -1,6 +1,7 @@
 #include "app/frame_list.h"
 
 #include <charconv>
+#include <cstdint>
 #include <cstdio>
 
 namespace darc {
@@ -14,7 +15,9 @@ bool parse_int(std::string_view s, int& out) {
 }
 
 std::string pad(int value, int width) {
-  std::string digits = std::to_string(value < 0 ? -value : value);
+  // In 64 bits: -INT_MIN does not fit an int (FrameBegin -2147483648 is a valid frame number).
+  const std::int64_t wide = value;
+  std::string digits = std::to_string(wide < 0 ? -wide : wide);
   if (int(digits.size()) < width) digits.insert(0, size_t(width) - digits.size(), '0');
   return value < 0 ? "-" + digits : digits;
 }
@@ -54,7 +57,7 @@ std::optional<FrameList> FrameList::parse(const std::string& text, std::string& 
 
 bool FrameList::contains(int frame) const {
   for (const Range& r : ranges_)
-    if (frame >= r.first && frame <= r.last && (frame - r.first) % r.step == 0) return true;
+    if (frame >= r.first && frame <= r.last && (std::int64_t(frame) - r.first) % r.step == 0) return true;
   return false;
 }
 

@@ -158,9 +158,12 @@ WorldTransform make_world_transform(const Matrix4& object_to_world) {
   return {object_to_world, object_to_world.inverse(), std::cbrt(std::abs(det3))};
 }
 
-// Appends one segment; returns false (appending nothing) when it is degenerate or not finite.
-bool append_segment(CurveSet& set, const CurvesInput& input, const SegmentRef& s, const BezierConversion& conversion,
-                    const WorldTransform& xf, uint32_t strand, uint32_t attribute_id) {
+enum class SegmentOutcome { Added, Degenerate, BeyondFloatRange };
+
+// Appends one segment, unless it is degenerate or beyond the float range in world space.
+SegmentOutcome append_segment(CurveSet& set, const CurvesInput& input, const SegmentRef& s,
+                              const BezierConversion& conversion, const WorldTransform& xf, uint32_t strand,
+                              uint32_t attribute_id) {
   // Convert in object space first: Hermite tangents and power coefficients are not points, so
   // only the resulting Bézier control points may be transformed as points.
   std::array<Vec3d, 4> object_cp;
@@ -173,7 +176,8 @@ bool append_segment(CurveSet& set, const CurvesInput& input, const SegmentRef& s
   }
   std::array<Vec3f, 4> cp;
   for (int i = 0; i < 4; ++i) cp[i] = Vec3f(xf.object_to_world.transform_point(object_cp[i]));
-  if (!all_finite(cp) || is_degenerate(cp)) return false;
+  if (!all_finite(cp)) return SegmentOutcome::BeyondFloatRange;
+  if (is_degenerate(cp)) return SegmentOutcome::Degenerate;
 
   std::array<double, 4> width{1, 1, 1, 1};
   if (input.width) {
@@ -184,7 +188,7 @@ bool append_segment(CurveSet& set, const CurvesInput& input, const SegmentRef& s
   std::array<float, 4> world_width;
   for (int i = 0; i < 4; ++i) world_width[i] = static_cast<float>(width[i] * xf.width_scale);
   for (float w : world_width)
-    if (!std::isfinite(w)) return false;
+    if (!std::isfinite(w)) return SegmentOutcome::BeyondFloatRange;
 
   auto colour = [&](const std::optional<PrimvarInput>& pv, const Vec3f& fallback, std::array<Vec3f, 4>& out) {
     if (!pv) {
@@ -212,7 +216,7 @@ bool append_segment(CurveSet& set, const CurvesInput& input, const SegmentRef& s
   colour(input.Os, input.default_os, colours.os);
   const Vec3f normals[2] = {n0, n1};
   set.add_segment(cp, world_width, strand, attribute_id, colours, oriented ? normals : nullptr);
-  return true;
+  return SegmentOutcome::Added;
 }
 
 }  // namespace
@@ -264,7 +268,8 @@ size_t expected_count(StorageClass storage, const CurvesTopology& topology) {
   return 0;
 }
 
-void append_curves(CurveSet& set, const CurvesInput& input, uint32_t attribute_id, uint32_t& next_strand_id) {
+CurvesAppended append_curves(CurveSet& set, const CurvesInput& input, uint32_t attribute_id, uint32_t& next_strand_id) {
+  CurvesAppended appended;
   CurvesTopology topology{input.cubic, input.periodic, input.cubic ? input.basis.step : 1, input.nvertices};
   validate_input(input, topology);
 
@@ -281,12 +286,15 @@ void append_curves(CurveSet& set, const CurvesInput& input, uint32_t attribute_i
       size_t first = input.cubic ? k * static_cast<size_t>(topology.step) : k;
       size_t controls = input.cubic ? 4 : 2;
       for (size_t j = 0; j < controls; ++j) s.vertex[j] = vertex_base + (first + j) % static_cast<size_t>(nv);
-      append_segment(set, input, s, conversion, xf, strand, attribute_id);
+      if (append_segment(set, input, s, conversion, xf, strand, attribute_id) == SegmentOutcome::BeyondFloatRange &&
+          appended.segments_beyond_float_range++ == 0)
+        appended.first_curve_beyond = c;
     }
     vertex_base += static_cast<size_t>(nv);
     varying_base += nsegs + (input.periodic ? 0 : 1);
   }
   set.mark_strand_ends(first_segment);
+  return appended;
 }
 
 }  // namespace darc

@@ -55,9 +55,17 @@ size_t segments_in_curve(const CurvesTopology& topology, int nv);
 // Requires a validated topology.
 size_t expected_count(StorageClass storage, const CurvesTopology& topology);
 
+// What append_curves left out besides collapsed segments: segments whose world-space control
+// points or widths overflow float (finite input, a large transform), for the caller to report.
+struct CurvesAppended {
+  size_t segments_beyond_float_range = 0;
+  size_t first_curve_beyond = 0;  // index of the curve holding the first of them
+};
+
 // Validates `input` (throws RibError with the offending name and counts before allocating
 // anything sized from it), then appends its segments to `set`. Each curve gets the strand id
-// next_strand_id++. Segments whose control points all coincide are dropped.
-void append_curves(CurveSet& set, const CurvesInput& input, uint32_t attribute_id, uint32_t& next_strand_id);
+// next_strand_id++. Segments whose control points all coincide are dropped, and so are segments
+// beyond the float range in world space (counted in the result).
+CurvesAppended append_curves(CurveSet& set, const CurvesInput& input, uint32_t attribute_id, uint32_t& next_strand_id);
 
 }  // namespace darc

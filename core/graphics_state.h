@@ -29,6 +29,7 @@ struct Options {
   std::optional<ScreenWindow> screen_window;  // explicit ScreenWindow
   std::optional<double> frame_aspect;          // explicit FrameAspectRatio
   double near_clip = 1e-10, far_clip = 1e38;
+  SourceLoc crop_loc;  // of the CropWindow in effect (its error is reported at WorldBegin)
   std::vector<PendingLight> pre_world_lights;
 };
 

@@ -12,6 +12,8 @@ namespace {
 // A polygon whose area is below this fraction of its squared bounding-box diagonal is treated
 // as degenerate (collinear or coincident points): its plane normal would be mostly rounding noise.
 constexpr double kDegenerateAreaFraction = 1e-10;
+// The fewest vertices of a loop, outer or hole.
+constexpr int kMinLoopVertices = 3;
 
 struct NewellPlane {
   Vec3d normal;  // not normalized: its length is twice the loop's area
@@ -156,8 +158,10 @@ std::vector<PolygonShape> make_points_general_polygons(const std::vector<int>& n
   }
   int64_t total_verts = 0;
   for (size_t k = 0; k < nverts_per_loop.size(); ++k) {
-    if (nverts_per_loop[k] < 0) {
-      error = fmt::format("loop {} has a negative vertex count {}", k, nverts_per_loop[k]);
+    // RI Spec 3.2: a polygon (and each of its holes) has at least 3 vertices; a shorter loop
+    // encloses nothing, so it is a count error as in Polygon and GeneralPolygon.
+    if (nverts_per_loop[k] < kMinLoopVertices) {
+      error = fmt::format("loop {} has {} vertices (at least {} required)", k, nverts_per_loop[k], kMinLoopVertices);
       return {};
     }
     total_verts += nverts_per_loop[k];

@@ -1,9 +1,13 @@
 #include "core/scene_builder.h"
 
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
+
+#include "core/shader_parameter_checks.h"
+#include "core/unused_request_checks.h"
 
 namespace darc {
 
@@ -14,6 +18,8 @@ namespace {
 constexpr int kMaxResolution = 16384;
 // Largest N for N x N pixel samples.
 constexpr double kMaxPixelSamples = 64;
+// Widest pixel filter (pixels): 16 is 8 pixels each side, eight times the RI default of 2.
+constexpr double kMaxFilterWidth = 16;
 
 const char* block_name(int b) {
   static const char* names[] = {"FrameBegin", "WorldBegin", "AttributeBegin", "TransformBegin", "ObjectBegin"};
@@ -102,10 +108,10 @@ void SceneBuilder::world_begin(const SourceLoc& loc) {
   saved_attributes_.push_back(attributes_);
   saved_ctm_.push_back(ctm_);
   in_world_ = true;
-  start_scene();
+  start_scene(loc);
 }
 
-void SceneBuilder::start_scene() {
+void SceneBuilder::start_scene(const SourceLoc& loc) {
   scene_ = std::make_unique<Scene>();
   frame_memory_estimate_ = 0;
   frame_over_memory_ = false;
@@ -122,6 +128,7 @@ void SceneBuilder::start_scene() {
   if (!overrides_.output.empty()) out.display_name = overrides_.output;
   out.frame_number = frame_number_;
   out.has_frame_number = has_frame_number_;
+  check_crop_window(out);
   s.output = out;
 
   Camera& cam = s.camera;
@@ -130,10 +137,11 @@ void SceneBuilder::start_scene() {
   cam.xres = out.xres;
   cam.yres = out.yres;
   double aspect = options_.frame_aspect.value_or(out.xres * out.pixel_aspect / out.yres);
+  aspect = checked_frame_aspect(aspect, loc);
   cam.screen = options_.screen_window.value_or(default_screen_window(aspect));
   cam.near_clip = options_.near_clip;
   cam.far_clip = options_.far_clip;
-  cam.world_to_camera = ctm_;
+  cam.world_to_camera = checked_camera_transform(loc);
   cam.finalize();
   camera_to_world_ = cam.camera_to_world;
 
@@ -263,13 +271,13 @@ void SceneBuilder::format(int xres, int yres, double pixel_aspect, const SourceL
 
 void SceneBuilder::frame_aspect_ratio(double ratio, const SourceLoc& loc) {
   if (!option_allowed("FrameAspectRatio", loc)) return;
-  if (!(ratio > 0)) throw RibError("frame aspect ratio must be positive");
+  if (!(ratio > 0)) throw RibError(fmt::format("frame aspect ratio {} must be positive", ratio));
   options_.frame_aspect = ratio;
 }
 
 void SceneBuilder::screen_window(double l, double r, double b, double t, const SourceLoc& loc) {
   if (!option_allowed("ScreenWindow", loc)) return;
-  if (l == r || b == t) throw RibError("ScreenWindow has zero width or height");
+  if (l == r || b == t) throw RibError(fmt::format("[{} {} {} {}] has zero width or height", l, r, b, t));
   options_.screen_window = ScreenWindow{l, r, b, t};
 }
 
@@ -277,17 +285,23 @@ void SceneBuilder::crop_window(double x0, double x1, double y0, double y1, const
   if (!option_allowed("CropWindow", loc)) return;
   auto in01 = [](double v) { return v >= 0 && v <= 1; };
   if (!in01(x0) || !in01(x1) || !in01(y0) || !in01(y1) || x0 >= x1 || y0 >= y1)
-    throw RibError("CropWindow needs 0 <= xmin < xmax <= 1 and 0 <= ymin < ymax <= 1");
+    throw RibError(fmt::format("[{} {} {} {}]: needs 0 <= xmin < xmax <= 1 and 0 <= ymin < ymax <= 1", x0, x1, y0, y1));
   double* c = options_.output.crop;
   c[0] = x0, c[1] = x1, c[2] = y0, c[3] = y1;
+  options_.crop_loc = loc;
 }
 
 void SceneBuilder::projection(const std::string& name, const ParamList& params, const SourceLoc& loc) {
   if (!option_allowed("Projection", loc)) return;
   if (name == "perspective") {
     // Checked before anything changes: a request with an error is skipped as a whole.
-    double fov = params.get_float("fov", 90.0f);
-    if (!(fov > 0 && fov < 180)) throw RibError("fov must be in (0, 180) degrees, found " + std::to_string(fov));
+    const Param* given = params.find("fov");
+    if (given && (given->decl.is_string() || given->floats.size() != 1))
+      throw RibError(
+          fmt::format("fov must be one number, found {}",
+                      given->decl.is_string() ? "a string" : std::to_string(given->floats.size()) + " numbers"));
+    const double fov = given ? given->floats[0] : 90.0;
+    if (!(fov > 0 && fov < 180)) throw RibError(fmt::format("fov must be in (0, 180) degrees, found {}", fov));
     options_.projection = Camera::Projection::Perspective;
     options_.fov_degrees = fov;
   } else if (name == "orthographic") {
@@ -302,7 +316,7 @@ void SceneBuilder::projection(const std::string& name, const ParamList& params, 
 
 void SceneBuilder::clipping(double n, double f, const SourceLoc& loc) {
   if (!option_allowed("Clipping", loc)) return;
-  if (!(n > 0) || !(f > n)) throw RibError("Clipping needs 0 < near < far");
+  if (!(n > 0) || !(f > n)) throw RibError(fmt::format("near {} and far {}: needs 0 < near < far", n, f));
   options_.near_clip = n;
   options_.far_clip = f;
 }
@@ -310,9 +324,13 @@ void SceneBuilder::clipping(double n, double f, const SourceLoc& loc) {
 void SceneBuilder::pixel_samples(double xs, double ys, const SourceLoc& loc) {
   if (!option_allowed("PixelSamples", loc)) return;
   if (!(xs >= 1) || !(ys >= 1) || xs > kMaxPixelSamples || ys > kMaxPixelSamples)
-    throw RibError("PixelSamples must be between 1 and " + std::to_string(int(kMaxPixelSamples)));
-  options_.output.pixel_samples[0] = xs;
-  options_.output.pixel_samples[1] = ys;
+    throw RibError(fmt::format("{} {} must be between 1 and {}", xs, ys, kMaxPixelSamples));
+  // The hiders sample an N x N grid: fractional counts are rounded, and the image says so.
+  const double x = std::round(xs), y = std::round(ys);
+  if (x != xs || y != ys)
+    diag_.warning(loc, "PixelSamples", fmt::format("{} {} are not whole numbers: rounded to {} {}", xs, ys, x, y));
+  options_.output.pixel_samples[0] = x;
+  options_.output.pixel_samples[1] = y;
 }
 
 void SceneBuilder::pixel_filter(const std::string& name, double xw, double yw, const SourceLoc& loc) {
@@ -324,7 +342,8 @@ void SceneBuilder::pixel_filter(const std::string& name, double xw, double yw, c
     options_.output.filter_width[0] = options_.output.filter_width[1] = 2;
     return;
   }
-  if (!(xw > 0) || !(yw > 0) || xw > 16 || yw > 16) throw RibError("filter widths must be in (0, 16]");
+  if (!(xw > 0) || !(yw > 0) || xw > kMaxFilterWidth || yw > kMaxFilterWidth)
+    throw RibError(fmt::format("filter widths {} {} must be in (0, {}]", xw, yw, kMaxFilterWidth));
   options_.output.filter_name = name;
   options_.output.filter_width[0] = xw;
   options_.output.filter_width[1] = yw;
@@ -332,7 +351,9 @@ void SceneBuilder::pixel_filter(const std::string& name, double xw, double yw, c
 
 void SceneBuilder::exposure(double gain, double gamma, const SourceLoc& loc) {
   if (!option_allowed("Exposure", loc)) return;
-  if (!(gamma > 0)) throw RibError("Exposure gamma must be positive");
+  // A negative gain would make every pixel negative; gain 0 (a black frame) is a fade.
+  if (!(gain >= 0)) throw RibError(fmt::format("gain {} must not be negative", gain));
+  if (!(gamma > 0)) throw RibError(fmt::format("gamma {} must be positive", gamma));
   options_.output.exposure_gain = gain;
   options_.output.exposure_gamma = gamma;
 }
@@ -391,14 +412,23 @@ void SceneBuilder::ignored_request(const std::string& request, const std::vector
       diag_.warning_once("matte", loc, "Matte", "holdout objects (Matte 1) are not supported: drawn as ordinary objects");
     return;
   }
-  if (std::find(std::begin(silent), std::end(silent), request) != std::end(silent)) return;
+  if (std::find(std::begin(silent), std::end(silent), request) != std::end(silent))
+    return check_unused_request_values(request, numbers, diag_, loc);
   diag_.warning_once("ignored:" + request, loc, request, "not supported by darc: ignored");
 }
 
 // ---------------------------------------------------------------- transforms
 
 void SceneBuilder::set_ctm(const Matrix4& m) { ctm_ = m; }
-void SceneBuilder::concat(const Matrix4& m) { ctm_ = m * ctm_; }
+void SceneBuilder::concat(const Matrix4& m) {
+  // Each factor is finite (the lexer refuses anything else), but repeated large ones can overflow
+  // the product: every point would then be infinite or NaN.
+  const Matrix4 product = m * ctm_;
+  for (const auto& row : product.m)
+    for (double v : row)
+      if (!std::isfinite(v)) throw RibError("the current transform would overflow (an entry beyond the double range)");
+  ctm_ = product;
+}
 
 void SceneBuilder::identity(const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.identity(loc); })) return;
@@ -507,14 +537,20 @@ void SceneBuilder::color(const std::array<float, 3>& rgb, const SourceLoc& loc) 
 
 void SceneBuilder::opacity(const std::array<float, 3>& rgb, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.opacity(rgb, loc); })) return;
-  attributes_.opacity = {std::clamp(rgb[0], 0.0f, 1.0f), std::clamp(rgb[1], 0.0f, 1.0f),
-                         std::clamp(rgb[2], 0.0f, 1.0f)};
+  // Compositing takes opacity as a fraction: outside [0, 1] it would add or remove light.
+  const Vec3f clamped{std::clamp(rgb[0], 0.0f, 1.0f), std::clamp(rgb[1], 0.0f, 1.0f), std::clamp(rgb[2], 0.0f, 1.0f)};
+  if (clamped != Vec3f{rgb[0], rgb[1], rgb[2]})
+    diag_.warning(loc, "Opacity",
+                  fmt::format("[{} {} {}] is outside [0, 1]: clamped to [{} {} {}]", rgb[0], rgb[1], rgb[2], clamped.x,
+                              clamped.y, clamped.z));
+  attributes_.opacity = clamped;
 }
 
 void SceneBuilder::surface(const std::string& name, const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.surface(name, params, loc); })) return;
+  auto checked = std::make_shared<const ParamList>(checked_shader_parameters("Surface", name, params, diag_, loc));
   attributes_.surface = name;
-  attributes_.surface_params = std::make_shared<const ParamList>(params);
+  attributes_.surface_params = std::move(checked);
   attributes_.surface_loc = loc;
 }
 
@@ -525,7 +561,9 @@ void SceneBuilder::displacement(const std::string& name, const ParamList&, const
 
 void SceneBuilder::add_light(const std::string& name, const std::string& handle, const ParamList& params,
                              const SourceLoc& loc) {
-  LightDesc d{name, params, ctm_, loc, light_casts_shadows(handle, params, loc)};
+  check_light_positions(params, ctm_);  // before WorldBegin: in camera space
+  ParamList checked = checked_shader_parameters("LightSource", name, params, diag_, loc);
+  LightDesc d{name, std::move(checked), ctm_, loc, light_casts_shadows(handle, params, loc)};
   if (!in_world_) {
     diag_.warning_once("prelight", loc, "LightSource",
                        "light declared before WorldBegin: placed relative to the camera and used for every frame");
@@ -548,10 +586,12 @@ void SceneBuilder::light_source(const std::string& name, const std::string& hand
 void SceneBuilder::area_light_source(const std::string& name, const std::string& handle, const ParamList& params,
                                      const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.area_light_source(name, handle, params, loc); })) return;
+  auto checked =
+      std::make_shared<const ParamList>(checked_shader_parameters("AreaLightSource", name, params, diag_, loc));
   diag_.warning_once("arealight", loc, "AreaLightSource",
                      "area lights do not illuminate other objects in darc: their geometry is drawn emissive");
   attributes_.area_light = name;
-  attributes_.area_light_params = std::make_shared<const ParamList>(params);
+  attributes_.area_light_params = std::move(checked);
   light_handles_.erase(handle);  // a handle names the latest light declared with it
   area_light_handles_.insert(handle);
 }

@@ -155,7 +155,15 @@ class SceneBuilder : public RiTarget {
   uint32_t make_material(const SourceLoc& loc);
   bool object_space_left_handed() const;
   Vec3f to_world(const float* p) const;
-  void start_scene();
+  void start_scene(const SourceLoc& loc);
+  // The camera checks that need the frame's final state (scene_builder_frame_checks.cpp): the
+  // frame aspect ratio, clamped to where the screen window stays within float range, and a crop
+  // window that must cover a pixel (else an error at the CropWindow, and no crop).
+  double checked_frame_aspect(double aspect, const SourceLoc& world_begin);
+  // The current transform as the world-to-camera transform: the identity (with a warning) when
+  // it is singular, as the camera must be inverted.
+  Matrix4 checked_camera_transform(const SourceLoc& world_begin);
+  void check_crop_window(OutputSettings& out);
   void add_light(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc& loc);
   // The common body of the four polygon requests.
   void add_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,

@@ -5,8 +5,11 @@
 #include "core/frame_memory.h"
 #include "core/scene_builder.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace darc {
 
@@ -88,6 +91,8 @@ Vec3f SceneBuilder::to_world(const float* p) const {
 
 namespace {
 
+bool all_finite(const Vec3f& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
 std::optional<PrimvarInput> primvar(const ParamList& params, const char* name, int components) {
   const Param* p = params.find(name);
   if (!p) return std::nullopt;
@@ -115,6 +120,68 @@ std::vector<float> read_points(const ParamList& params, const char* request) {
     return out;
   }
   throw RibError(std::string(request) + " needs \"P\" or \"Pw\"");
+}
+
+// What clamp_values changed: how many numbers, and the first of them (index and given value).
+struct ClampedValues {
+  size_t count = 0;
+  size_t first = 0;
+  float first_value = 0;
+};
+
+// Clamps every number of `values` to [lo, hi] in place, in one pass and without allocating, so
+// that it stays cheap for a million-vertex Curves call.
+ClampedValues clamp_values(std::vector<float>& values, float lo, float hi) {
+  ClampedValues clamped;
+  for (size_t i = 0; i < values.size(); ++i) {
+    const float v = values[i];
+    if (v >= lo && v <= hi) continue;
+    if (clamped.count++ == 0) {
+      clamped.first = i;
+      clamped.first_value = v;
+    }
+    values[i] = std::clamp(v, lo, hi);
+  }
+  return clamped;
+}
+
+// The warning for what clamp_values changed in primitive variable `name`, e.g.
+// "\"width\" (varying) value 3 is -0.01, negative: clamped to 0 (2 numbers clamped)".
+std::string clamp_message(const char* name, const PrimvarInput& pv, const ClampedValues& c, const char* problem,
+                          float lo, float hi) {
+  const float used = std::clamp(c.first_value, lo, hi);
+  const std::string which = pv.components == 1 ? fmt::format("value {}", c.first)
+                                               : fmt::format("value {} component {}", c.first / size_t(pv.components),
+                                                             c.first % size_t(pv.components));
+  return fmt::format("\"{}\" ({}) {} is {}, {}: clamped to {} ({} number{} clamped)", name, to_string(pv.storage),
+                     which, c.first_value, problem, used, c.count, c.count == 1 ? "" : "s");
+}
+
+constexpr float kFloatMax = std::numeric_limits<float>::max();
+
+// What a Curves call clamped, and what append_curves dropped, for the warnings.
+struct CurveClamps {
+  ClampedValues widths, opacities;
+  float constant_width = 0;  // as given
+  CurvesAppended appended;
+};
+
+void report_curve_clamps(const CurveClamps& c, const CurvesInput& in, Diagnostics& diag, const SourceLoc& loc) {
+  if (c.widths.count > 0)
+    diag.warning(loc, "Curves", clamp_message("width", *in.width, c.widths, "negative", 0, kFloatMax));
+  if (c.constant_width < 0)
+    diag.warning(loc, "Curves", fmt::format("\"constantwidth\" {} is negative: clamped to 0", c.constant_width));
+  if (c.opacities.count > 0)
+    diag.warning(loc, "Curves", clamp_message("Os", *in.Os, c.opacities, "outside [0, 1]", 0, 1));
+  const size_t dropped = c.appended.segments_beyond_float_range;
+  if (dropped == 1)
+    diag.warning(loc, "Curves",
+                 fmt::format("1 segment (in curve {}) lies beyond the float range in world space: dropped",
+                             c.appended.first_curve_beyond));
+  else if (dropped > 1)
+    diag.warning(loc, "Curves",
+                 fmt::format("{} segments (the first in curve {}) lie beyond the float range in world space: dropped",
+                             dropped, c.appended.first_curve_beyond));
 }
 
 }  // namespace
@@ -155,7 +222,9 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
   in.p_components = 3;
   in.width = primvar(params, "width", 1);
   if (const Param* cw = params.find("constantwidth")) {
-    if (cw->floats.empty()) throw RibError("\"constantwidth\" needs a value");
+    if (cw->decl.is_string() || cw->floats.size() != 1)
+      throw RibError(fmt::format("\"constantwidth\" must be one number, found {}",
+                                 cw->decl.is_string() ? "a string" : fmt::format("{} numbers", cw->floats.size())));
     in.constantwidth = cw->floats[0];
   }
   in.N = primvar(params, "N", 3);
@@ -169,17 +238,26 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
   uint64_t segments = 0;
   for (int nv : in.nvertices) segments += segments_in_curve(topology, nv);
   if (!reserve_frame_memory(segments, 0, 0)) return;
+  // Negative widths (a cubic width overshooting at a tip, an exporter's rounding) mean "nothing
+  // there": clamped to 0, so the strand keeps its other segments. Opacity is a fraction.
+  CurveClamps clamps;
+  clamps.widths = in.width ? clamp_values(in.width->values, 0, kFloatMax) : ClampedValues{};
+  clamps.opacities = in.Os ? clamp_values(in.Os->values, 0, 1) : ClampedValues{};
+  clamps.constant_width = in.constantwidth.value_or(0);
+  if (clamps.constant_width < 0) in.constantwidth = 0.0f;
   uint32_t material = make_material(loc);
   if (id == 0) {
-    append_curves(scene_->curves, in, material, next_strand_id_);
-    return;
+    clamps.appended = append_curves(scene_->curves, in, material, next_strand_id_);
+  } else {
+    CurveChunk chunk{ctm_, attributes_.vbasis, attributes_.color, attributes_.opacity, CurveSet{}, 0, true};
+    clamps.appended = append_curves(chunk.segments, in, material, chunk.strands);
+    chunk.segments.shrink_to_fit();
+    scene_->curves.append(chunk.segments, material, next_strand_id_);
+    next_strand_id_ += chunk.strands;
+    curve_chunks_.insert_or_assign(id, std::move(chunk));
   }
-  CurveChunk chunk{ctm_, attributes_.vbasis, attributes_.color, attributes_.opacity, CurveSet{}, 0, true};
-  append_curves(chunk.segments, in, material, chunk.strands);
-  chunk.segments.shrink_to_fit();
-  scene_->curves.append(chunk.segments, material, next_strand_id_);
-  next_strand_id_ += chunk.strands;
-  curve_chunks_.insert_or_assign(id, std::move(chunk));
+  // Warnings only once the request is known to be valid (append_curves throws for bad counts).
+  report_curve_clamps(clamps, in, diag_, loc);
 }
 
 void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
@@ -189,8 +267,14 @@ void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetam
   if (!building_geometry("Sphere", loc)) return;
   note_geometry(replayed_id());
   if (radius == 0 || thetamax == 0) return;  // empty surface
+  Sphere sphere = Sphere::make(radius, zmin, zmax, thetamax, ctm_);
+  const BBox box = sphere.bounds();
+  // The whole request would be dropped, so it is an error (a Curves segment or a polygon face
+  // beyond the range is only a part of its request: those are dropped with a warning).
+  if (!sphere.degenerate && !(all_finite(box.lo) && all_finite(box.hi)))
+    throw RibError(fmt::format("radius {} lies beyond the float range in world space", radius));
   if (!reserve_frame_memory(0, 1, 0)) return;
-  scene_->spheres.push_back(Sphere::make(radius, zmin, zmax, thetamax, ctm_));
+  scene_->spheres.push_back(std::move(sphere));
   scene_->sphere_material.push_back(make_material(loc));
 }
 
@@ -219,6 +303,8 @@ void SceneBuilder::general_polygon(const std::vector<int>& nverts_per_loop, cons
   if (total > points)
     throw RibError("the loops have " + std::to_string(total) + " vertices but only " + std::to_string(points) +
                    " points are given");
+  // Fewer: the loops take the points in order, so a point no loop takes is a count mismatch.
+  if (total < points) throw RibError(fmt::format("the loops have {} vertices but {} points are given", total, points));
   std::vector<int> indices(total);
   for (size_t i = 0; i < total; ++i) indices[i] = int(i);
   add_polygons({int(nverts_per_loop.size())}, nverts_per_loop, indices, params, "GeneralPolygon", loc);
@@ -249,11 +335,22 @@ void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const s
   if (!reserve_frame_memory(0, nloops_per_face.size(), indices.size())) return;
   std::vector<float> P = read_points(params, request);
   std::vector<Vec3f> world(P.size() / 3);
-  for (size_t i = 0; i < world.size(); ++i) world[i] = to_world(&P[3 * i]);
+  size_t beyond_float_range = 0;
+  for (size_t i = 0; i < world.size(); ++i) {
+    world[i] = to_world(&P[3 * i]);
+    beyond_float_range += !all_finite(world[i]);
+  }
   std::string error;
   std::vector<PolygonShape> shapes =
       make_points_general_polygons(nloops_per_face, nverts_per_loop, indices, world, error);
   if (!error.empty()) throw RibError(error);
+  // PolygonShape::make drops a face with such a point.
+  if (beyond_float_range > 0)
+    diag_.warning(loc, request,
+                  fmt::format("{} beyond the float range in world space: the faces that use {} are dropped",
+                              beyond_float_range == 1 ? std::string("1 point lies")
+                                                      : fmt::format("{} points lie", beyond_float_range),
+                              beyond_float_range == 1 ? "it" : "them"));
   uint32_t material = make_material(loc);
   for (PolygonShape& s : shapes) {
     scene_->polygons.push_back(std::move(s));

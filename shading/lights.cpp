@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
+
+#include "core/shader_parameter_checks.h"
 
 namespace darc {
 
@@ -121,8 +122,8 @@ std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& de
     } else if (kind == "pointlight") {
       lights.push_back(std::make_unique<PointLight>(c, from_w));
     } else {
-      float cone = p.get_float("coneangle", float(30 * std::numbers::pi / 180));
-      float delta = p.get_float("conedeltaangle", float(5 * std::numbers::pi / 180));
+      float cone = p.get_float("coneangle", kDefaultSpotConeAngle);
+      float delta = p.get_float("conedeltaangle", kDefaultSpotConeDeltaAngle);
       float beam = p.get_float("beamdistribution", 2.0f);
       lights.push_back(std::make_unique<SpotLight>(c, from_w, to_w - from_w, cone, delta, beam));
     }

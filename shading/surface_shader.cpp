@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/shader_parameter_checks.h"
+
 namespace darc {
 
 namespace {
@@ -25,7 +27,7 @@ Vec3f specular_term(const Vec3f& n, const Vec3f& v, float roughness, const Light
   if (dot(n, lc.L) <= 0) return {};
   Vec3f h = normalize(lc.L + v);
   float c = dot(n, h);
-  return c > 0 ? lc.Cl * std::pow(c, 1.0f / std::max(roughness, 1e-4f)) : Vec3f{};
+  return c > 0 ? lc.Cl * std::pow(c, 1.0f / std::max(roughness, kMinRoughness)) : Vec3f{};
 }
 
 SurfaceLobes base_lobes(const ShadingPoint& sp) {
@@ -171,7 +173,7 @@ class HairSurface : public SurfaceShader {
     float cos_tl = dot(T, lc.L), sin_tl = std::sqrt(std::max(0.0f, 1 - cos_tl * cos_tl));
     Vec3f c = mul(sp.Cs, lc.Cl * (sin_tl * kd_));
     float cone = cos_tl * cos_tv + sin_tl * sin_tv;
-    if (cone > 0) c += mul(specular_color_, lc.Cl * (std::pow(cone, 1.0f / std::max(roughness_, 1e-4f)) * ks_));
+    if (cone > 0) c += mul(specular_color_, lc.Cl * (std::pow(cone, 1.0f / std::max(roughness_, kMinRoughness)) * ks_));
     return c;
   }
 
