@@ -32,6 +32,10 @@ struct AppOptions {
   // process (app/memory_limit.h); 0 (--memory-limit none): no limit.
   std::optional<uint64_t> memory_limit_bytes;
   bool archive_cache = true;  // --no-archive-cache: parse every ReadArchive again (for comparison)
+  // --procedural-path (repeatable): folders Procedural "RunProgram" may start programs from,
+  // besides those of Option "searchpath" "procedural".
+  std::vector<std::string> procedural_paths;
+  double procedural_timeout_seconds = 60;  // --procedural-timeout: per RunProgram request
 };
 
 // Exit codes (DESIGN.md).

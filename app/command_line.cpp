@@ -15,6 +15,10 @@ namespace {
 // RGBA float stay addressable.
 constexpr int kMaxResolution = 16384;
 
+// Longest --procedural-timeout: a day, far past any generator, and well inside what the
+// millisecond clock of the time limit holds.
+constexpr double kMaxProceduralTimeoutSeconds = 86400;
+
 // Parses a positive integer that fills `text` exactly (no sign, spaces or trailing characters).
 bool parse_positive_int(std::string_view text, int& value) {
   if (text.empty() || text.front() < '0' || text.front() > '9') return false;
@@ -75,6 +79,16 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
   bool no_archive_cache = false;
   app.add_flag("--no-archive-cache", no_archive_cache,
                "read and parse every ReadArchive again instead of replaying the archive parsed the first time");
+  app.add_option("--procedural-path", o.procedural_paths,
+                 "a folder Procedural \"RunProgram\" may start programs from (repeatable); the scene's "
+                 "Option \"searchpath\" \"procedural\" adds others")
+      ->check(CLI::ExistingDirectory)
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--procedural-timeout", o.procedural_timeout_seconds,
+                 "seconds a RunProgram generator may take for one request before it is killed (default 60)")
+      ->check(CLI::Range(0.001, kMaxProceduralTimeoutSeconds));
   std::string memory_limit;
   app.add_option("--memory-limit", memory_limit,
                  "memory darc may use, e.g. 8G or 500M, or none (default: what the machine, the cgroup and "

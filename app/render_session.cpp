@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -125,6 +126,14 @@ void set_frame_memory_limit(const AppOptions& o, FrameOverrides& overrides) {
   overrides.memory_limit_source = "the limit is " + format_bytes(limit.bytes) + ", from " + limit.source;
 }
 
+// --procedural-path and --procedural-timeout.
+void configure_procedurals(const AppOptions& o, RibParser& parser) {
+  parser.set_procedural_folders(o.procedural_paths);
+  RunProgramLimits limits;
+  limits.time_limit = std::chrono::milliseconds(std::llround(o.procedural_timeout_seconds * 1000));
+  parser.set_run_program_limits(limits);
+}
+
 }  // namespace
 
 int run_render_session(const AppOptions& o) {
@@ -148,6 +157,7 @@ int run_render_session(const AppOptions& o) {
   if (o.cat) {
     RibWriter writer(std::cout);
     RibParser parser(writer, diag);
+    configure_procedurals(o, parser);
     for (const std::string& in : o.inputs) {
       if (diag.aborted()) break;
       parser.parse_file(in);
@@ -289,6 +299,7 @@ int run_render_session(const AppOptions& o) {
   SceneBuilder builder(diag, cb, overrides);
   RibParser parser(builder, diag);
   if (o.archive_cache) parser.use_archive_cache(&archives);
+  configure_procedurals(o, parser);
   for (const std::string& in : o.inputs) {
     if (diag.aborted()) break;
     parser.parse_file(in);

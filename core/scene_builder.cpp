@@ -249,9 +249,9 @@ bool SceneBuilder::option_allowed(const char* request, const SourceLoc& loc) {
 void SceneBuilder::option(const std::string& category, const ParamList& params, const SourceLoc& loc) {
   if (category == "searchpath") {
     for (const Param& p : params.params)
-      if (p.name != "archive")
+      if (p.name != "archive" && p.name != "procedural")  // the parser uses both
         diag_.warning_once("searchpath:" + p.name, loc, "Option",
-                           "searchpath \"" + p.name + "\" ignored (only \"archive\" is used)");
+                           "searchpath \"" + p.name + "\" ignored (only \"archive\" and \"procedural\" are used)");
     return;
   }
   if (category == "trace") return trace_option(params, loc);

@@ -124,6 +124,9 @@ class SceneBuilder : public RiTarget {
                                const std::vector<int>& indices, const ParamList& params,
                                const SourceLoc& loc) override;
   void skipped_primitive(const std::string& request, const SourceLoc& loc) override;
+  // Not wanted in a frame that is not rendered; the area is the bound's projection clipped to the
+  // image (scene_builder_procedural.cpp).
+  ProceduralBound procedural_bound(const std::array<double, 6>& bound, const SourceLoc& loc) override;
 
  private:
   enum class Block { Frame, World, Attribute, Transform, Object };

@@ -1,9 +1,10 @@
 // libFuzzer target for the RIB parser driving the real SceneBuilder: the input is parsed as a
-// RIB file and every frame is built as darc would build it, without rendering. ReadArchive is
-// refused (RibParser::allow_archive_files(false)), so no input reaches the file system. Small
-// finished scenes also get both acceleration structures built; large ones are skipped, so that
-// an input's cost stays near linear in its size (libFuzzer's -rss_limit_mb and -malloc_limit_mb,
-// given by scripts/fuzz, bound the memory an input may make the builder allocate).
+// RIB file and every frame is built as darc would build it, without rendering. ReadArchive and
+// the procedurals are refused (RibParser::allow_archive_files(false)), so no input reaches the
+// file system or starts a program. Small finished scenes also get both acceleration structures
+// built; large ones are skipped, so that an input's cost stays near linear in its size
+// (libFuzzer's -rss_limit_mb and -malloc_limit_mb, given by scripts/fuzz, bound the memory an
+// input may make the builder allocate).
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

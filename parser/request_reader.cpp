@@ -103,6 +103,22 @@ std::vector<int> RequestReader::integer_array(const char* what) {
   return values;
 }
 
+std::vector<std::string> RequestReader::string_array(const char* what) {
+  std::vector<std::string> values;
+  if (lexer_.peek().kind == TokenKind::String) {
+    values.push_back(lexer_.next().text);
+    return values;
+  }
+  if (lexer_.peek().kind != TokenKind::ArrayBegin) fail_expected(fmt::format("a string array for {}", what));
+  lexer_.next();
+  while (lexer_.peek().kind != TokenKind::ArrayEnd) {
+    if (lexer_.peek().kind != TokenKind::String) fail_expected(fmt::format("a string or ']' in {}", what));
+    values.push_back(lexer_.next().text);
+  }
+  lexer_.next();
+  return values;
+}
+
 std::string RequestReader::handle(const char* what) {
   const Token& t = lexer_.peek();
   if (t.kind == TokenKind::String) return lexer_.next().text;

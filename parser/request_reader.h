@@ -45,6 +45,8 @@ class RequestReader {
   }
   // A bracketed array of integers; a bare number is accepted as a one-element array.
   std::vector<int> integer_array(const char* what);
+  // A bracketed array of strings; a bare string is accepted as a one-element array.
+  std::vector<std::string> string_array(const char* what);
   // A light or object handle: an integer (returned without decimals) or a string.
   std::string handle(const char* what);
   // A Basis argument: a name or 16 numbers.

@@ -24,6 +24,13 @@ struct BasisArg {
   std::array<double, 16> matrix{};
 };
 
+// What the frame being built makes of a procedural's bound, asked before the procedural is read
+// or run (RiTarget::procedural_bound).
+struct ProceduralBound {
+  bool wanted = true;      // false: nothing inside it can reach an image (its frame is not rendered)
+  double raster_area = 0;  // pixels the bound covers in the image (RunProgram's "detail"); 0: unknown
+};
+
 class RiTarget {
  public:
   virtual ~RiTarget() = default;
@@ -118,6 +125,13 @@ class RiTarget {
   // SubdivisionMesh, Procedural2, ...: known_requests.h): the parser has warned and skips its
   // arguments. It lets a target tell a frame whose every primitive was skipped from an empty one.
   virtual void skipped_primitive(const std::string& request, const SourceLoc& loc) = 0;
+
+  // Procedurals are expanded by the parser (the target sees what they produce, inside an
+  // AttributeBegin/AttributeEnd pair); this asks first about the bound (xmin xmax ymin ymax zmin
+  // zmax in the current object space). The default: wanted, area unknown.
+  virtual ProceduralBound procedural_bound(const std::array<double, 6>& /*bound*/, const SourceLoc& /*loc*/) {
+    return {};
+  }
 };
 
 }  // namespace darc

@@ -50,8 +50,10 @@ bool is_readable_file(const fs::path& p) {
   return fs::is_regular_file(p, ec);
 }
 
-// Splits a search path "a:b:&" replacing "&" by the previous path's directories.
-std::vector<std::string> expand_search_path(const std::string& spec, const std::vector<std::string>& previous) {
+// Splits a search path "a:b:&:@" replacing "&" by the previous path's directories and "@" by
+// the default ones.
+std::vector<std::string> expand_search_path(const std::string& spec, const std::vector<std::string>& previous,
+                                            const std::vector<std::string>& defaults) {
   std::vector<std::string> dirs;
   size_t begin = 0;
   while (begin <= spec.size()) {
@@ -60,10 +62,23 @@ std::vector<std::string> expand_search_path(const std::string& spec, const std::
     const std::string dir = spec.substr(begin, end - begin);
     if (dir == "&") {
       dirs.insert(dirs.end(), previous.begin(), previous.end());
+    } else if (dir == "@") {
+      dirs.insert(dirs.end(), defaults.begin(), defaults.end());
     } else if (!dir.empty()) {
       dirs.push_back(dir);
     }
     begin = end + 1;
+  }
+  return dirs;
+}
+
+// The search path given by every string of `param`.
+std::vector<std::string> search_path(const Param& param, const std::vector<std::string>& previous,
+                                     const std::vector<std::string>& defaults) {
+  std::vector<std::string> dirs;
+  for (const std::string& spec : param.strings) {
+    const std::vector<std::string> part = expand_search_path(spec, previous, defaults);
+    dirs.insert(dirs.end(), part.begin(), part.end());
   }
   return dirs;
 }
@@ -154,7 +169,7 @@ void RibParser::skip_to_next_request(Lexer& lexer) {
 }
 
 void RibParser::dispatch(const std::string& request, RequestReader& args, const SourceLoc& loc) {
-  if (request == "ReadArchive") return read_archive(args);
+  if (request == "ReadArchive") return read_archive(args, loc);
   if (request == "ArchiveBegin") return archive_begin(args, loc);
   if (request == "ArchiveEnd") throw RibError("ArchiveEnd without ArchiveBegin");
   if (request == "Declare") return declare(args, loc);
@@ -162,6 +177,7 @@ void RibParser::dispatch(const std::string& request, RequestReader& args, const 
   if (request == "Attribute") return attribute(args, loc);
   if (request == "FrameBegin") return frame_begin(args, loc);
   if (request == "ErrorHandler") return error_handler(args, loc);
+  if (request == "Procedural" || request == "Procedural2") return procedural(args, request, loc);
   if (RequestHandler handler = find_request_handler(request)) {
     RequestContext context{args, target_, loc, request};
     handler(context);
@@ -270,13 +286,15 @@ void RibParser::option(RequestReader& args, const SourceLoc& loc) {
   const std::string category = args.string("the option category");
   const ParamList params = args.param_list("Option");
   if (category == "searchpath") {
-    if (const Param* archive = params.find("archive")) {
-      std::vector<std::string> dirs;
-      for (const std::string& spec : archive->strings) {
-        const std::vector<std::string> part = expand_search_path(spec, archive_path_);
-        dirs.insert(dirs.end(), part.begin(), part.end());
-      }
-      archive_path_ = std::move(dirs);
+    if (const Param* archive = params.find("archive")) archive_path_ = search_path(*archive, archive_path_, {});
+    if (const Param* procedural = params.find("procedural")) {
+      // Relative folders are taken from the file that names them, so that a scene and its
+      // generators move together.
+      const fs::path base = include_stack_.empty() ? fs::path() : fs::path(include_stack_.back()).parent_path();
+      std::vector<std::string> dirs = search_path(*procedural, procedural_path_, procedural_folders_);
+      for (std::string& dir : dirs)
+        if (fs::path(dir).is_relative()) dir = (base / dir).string();
+      procedural_path_ = std::move(dirs);
     }
   }
   target_.option(category, params, loc);
@@ -330,26 +348,31 @@ std::string RibParser::resolve_archive(const std::string& name) const {
   return name;
 }
 
-void RibParser::read_archive(RequestReader& args) {
+void RibParser::read_archive(RequestReader& args, const SourceLoc& loc) {
   const std::string name = args.string("the archive name");
   args.expect_request_end("ReadArchive");
+  include_archive(name, loc);
+}
+
+void RibParser::include_archive(const std::string& name, const SourceLoc& loc) {
   if (const InlineArchive* archive = inline_archives_.find(name)) return replay_inline_archive(name, *archive);
   if (is_zip_member(name))
-    throw RibError(fmt::format("cannot read archive \"{}\": zip archive members are not supported", name));
-  if (!archive_files_allowed_) throw RibError(fmt::format("cannot open archive \"{}\": file access is disabled", name));
+    throw RibSyntaxError(loc, fmt::format("cannot read archive \"{}\": zip archive members are not supported", name));
+  if (!archive_files_allowed_)
+    throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\": file access is disabled", name));
   const std::string path = resolve_archive(name);
-  if (!is_readable_file(path)) throw RibError(fmt::format("cannot open archive \"{}\"", name));
+  if (!is_readable_file(path)) throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\"", name));
   const std::string canonical = canonical_name(path);
   if (std::find(include_stack_.begin(), include_stack_.end(), canonical) != include_stack_.end()) {
-    throw RibError(fmt::format("archive \"{}\" includes itself (cycle through {})", name, canonical));
+    throw RibSyntaxError(loc, fmt::format("archive \"{}\" includes itself (cycle through {})", name, canonical));
   }
   if (include_stack_.size() >= kMaxArchiveDepth) {
-    throw RibError(fmt::format("archive \"{}\" is nested deeper than {} levels", name, kMaxArchiveDepth));
+    throw RibSyntaxError(loc, fmt::format("archive \"{}\" is nested deeper than {} levels", name, kMaxArchiveDepth));
   }
   if (archive_cache_) return include_cached_archive(path, canonical);
   std::string text;
   std::string reason;
-  if (!read_rib_text(path, text, reason)) throw RibError(fmt::format("cannot open archive \"{}\"", name));
+  if (!read_rib_text(path, text, reason)) throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\"", name));
   parse_text(std::move(text), path);
 }
 
@@ -403,12 +426,15 @@ std::optional<RecordedArchive> RibParser::record_archive(std::string text, const
   child.inline_archives_ = inline_archives_;
   child.inline_stack_ = inline_stack_;
   child.conditions_ = conditions_;
+  child.procedural_path_ = procedural_path_;
+  child.procedural_folders_ = procedural_folders_;
+  child.run_program_limits_ = run_program_limits_;
   child.parse_text(std::move(text), path);
   // Past the message caps some errors were counted but not recorded: a replay would lose them.
   if (!replayable || errors_kept != recorded_diag.error_count()) return std::nullopt;
   // Conditional RIB and inline archives depend on (or change) this parser's state of the
   // moment ($Frame, the archives defined so far): such an archive is parsed at each read.
-  if (child.read_parser_state_) return std::nullopt;
+  if (child.read_parser_state_ || child.procedural_path_ != procedural_path_) return std::nullopt;
   archive.declarations_after = std::move(child.declared_);
   archive.search_path_after = std::move(child.archive_path_);
   return archive;

@@ -3,13 +3,15 @@
 // recovering at the next request so that one run reports all errors. ReadArchive is inlined
 // here (the target never sees it): an inline archive of that name (ArchiveBegin/ArchiveEnd,
 // inline_archives.h) first, else a file searched in the including file's directory and then
-// Option "searchpath" "archive". Conditional RIB (IfBegin/ElseIf/Else/IfEnd) is evaluated
+// Option "searchpath" "archive"; so are the procedurals DelayedReadArchive and RunProgram
+// (rib_parser_procedural.cpp). Conditional RIB (IfBegin/ElseIf/Else/IfEnd) is evaluated
 // here too (condition_expression.h): the target sees the requests of the branches taken only.
 // ErrorHandler is applied here, to the Diagnostics, from the next request on
 // (error_handler.h); under "abort" parsing stops at the first error.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,6 +24,7 @@
 #include "parser/inline_archives.h"
 #include "parser/request_reader.h"
 #include "parser/ri_target.h"
+#include "parser/run_program.h"
 
 namespace darc {
 
@@ -41,14 +44,25 @@ class RibParser {
   // The archive search path currently in effect (from Option "searchpath" "archive").
   const std::vector<std::string>& archive_search_path() const { return archive_path_; }
 
-  // Whether ReadArchive may read files (the default). When off, every ReadArchive is an error
-  // and no file is looked up or opened: for input that must not reach the file system (fuzzing).
+  // Whether ReadArchive and procedurals may read files and start programs (the default). When
+  // off, every ReadArchive, DelayedReadArchive and RunProgram is an error, no file is looked up
+  // or opened and no program started: for input that must not reach the system (fuzzing).
   void allow_archive_files(bool allowed) { archive_files_allowed_ = allowed; }
 
   // Parse each archive once and replay it from `cache` at later ReadArchives of it (nullptr,
   // the default: every ReadArchive reads and parses its file). The cache must outlive the parser;
   // one cache serves every parser of a run.
   void use_archive_cache(ArchiveCache* cache) { archive_cache_ = cache; }
+
+  // Procedurals (rib_parser_procedural.cpp). The folders RunProgram may start programs from
+  // besides those of Option "searchpath" "procedural" (--procedural-path); "@" in that option
+  // stands for them.
+  // Relative folders are taken from the current directory.
+  void set_procedural_folders(const std::vector<std::string>& folders);
+  // The time and output limits of one RunProgram request (--procedural-timeout).
+  void set_run_program_limits(const RunProgramLimits& limits) { run_program_limits_ = limits; }
+  // The procedural search path currently in effect (from Option "searchpath" "procedural").
+  const std::vector<std::string>& procedural_search_path() const { return procedural_path_; }
 
  private:
   // What is being read: one file's text or one inline archive's body. Conditional blocks must
@@ -66,9 +80,18 @@ class RibParser {
   // "unknown"; one warning per name, the arguments skipped.
   void dispatch_unimplemented(const std::string& request, RequestReader& args, const SourceLoc& loc);
   void skip_to_next_request(Lexer& lexer);
-  void read_archive(RequestReader& args);
+  void read_archive(RequestReader& args, const SourceLoc& loc);
+  // Reads the archive `name` (an inline archive of that name, else a file beside the including
+  // file, then on the archive search path) into the request stream; errors (missing file, cycle,
+  // depth) are reported at `loc`. ReadArchive and DelayedReadArchive both come here.
+  void include_archive(const std::string& name, const SourceLoc& loc);
   void replay_inline_archive(const std::string& name, const InlineArchive& archive);
   void archive_begin(RequestReader& args, const SourceLoc& loc);
+  // Procedural, Procedural2 (rib_parser_procedural.cpp).
+  void procedural(RequestReader& args, const std::string& request, const SourceLoc& loc);
+  void run_procedural_program(const std::string& program, const std::string& data, double detail, const SourceLoc& loc);
+  // Reads a procedural's RIB (`read` calls the parser) in the graphics state of its request.
+  void expand_procedural(const std::function<void()>& read, const SourceLoc& loc);
   void declare(RequestReader& args, const SourceLoc& loc);
   void option(RequestReader& args, const SourceLoc& loc);
   void attribute(RequestReader& args, const SourceLoc& loc);
@@ -103,8 +126,12 @@ class RibParser {
   ArchiveCache* archive_cache_ = nullptr;
   // While this parser records an archive for the cache: the files the recording depends on.
   std::vector<FileStamp>* recorded_files_ = nullptr;
-  // Conditional RIB or inline archives were used (the archive cache does not replay such text).
+  // Conditional RIB, inline archives or procedurals were used (the archive cache does not
+  // replay such text: it depends on the moment, or starts programs).
   bool read_parser_state_ = false;
+  std::vector<std::string> procedural_path_;     // Option "searchpath" "procedural", absolute
+  std::vector<std::string> procedural_folders_;  // --procedural-path
+  RunProgramLimits run_program_limits_;
 };
 
 }  // namespace darc
