@@ -130,6 +130,8 @@ std::vector<Row> option_rows() {
        [](const Scene& s) { EXPECT_EQ(s.output.trace_max_depth, 100); }},
       {"framebegin-number", "FrameBegin -2147483648\nWorldBegin\nWorldEnd\nFrameEnd\n", std::nullopt,
        [](const Scene& s) { EXPECT_EQ(s.output.frame_number, std::numeric_limits<int>::min()); }},
+      {"procedural-bound", in_world("Procedural \"DelayedReadArchive\" [\"absent.rib\"] [1 0 0 1 0 1]"),
+       error(2, "Procedural", "the bound's xmin (1) is greater than its xmax (0)"), [](const Scene&) {}},
       {"version", before_world("version 9.5"), std::nullopt, [](const Scene&) {}},
   };
 }
