@@ -316,6 +316,44 @@ TEST(Quadric, TorusSilhouetteFromFarAwayAndTransformed) {
   EXPECT_EQ(wrong, 0);
 }
 
+// Rays grazing the torus at random silhouette points, offset a little off the tangent plane:
+// wherever a dense sampling of the implicit function along the ray finds a sign change (the ray
+// truly crosses the surface), the quartic finds a hit there.
+TEST(Quadric, TorusGrazingRaysFindEveryCrossing) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  SpecShape s = torus(1, 0.25, 0, 360, 360);
+  const double window = 0.02;  // the ray runs from P - w window / 2 to P + w window / 2
+  const int samples = 20000;   // step 1e-6 along it
+  int crossings = 0, misses = 0;
+  for (int i = 0; i < 2000; ++i) {
+    double u = unit(rng), v = unit(rng);
+    Vec3d p = s.point(u, v);
+    Vec3d n = normalize(spec_normal(s, u, v));
+    Vec3d a, b;
+    orthonormal_basis(n, a, b);
+    double angle = 2 * kPi * unit(rng);
+    Vec3d w = a * std::cos(angle) + b * std::sin(angle);  // tangent: w . n = 0
+    Vec3d o = p + n * ((unit(rng) - 0.5) * 2e-4) - w * (0.5 * window);
+    Ray ray{Vec3f(o), Vec3f(w)};  // the reference samples the ray as stored, in float
+    ray.tmax = float(window);
+    Vec3d od(ray.o), wd(ray.d);
+    double first = -1, previous = s.implicit(od);
+    for (int k = 1; k <= samples && first < 0; ++k) {
+      double t = window * k / samples;
+      double f = s.implicit(od + wd * t);
+      if ((f < 0) != (previous < 0)) first = t;
+      previous = f;
+    }
+    if (first < 0) continue;
+    ++crossings;
+    SurfaceHit hit;
+    if (!s.quadric.intersect(ray, hit) || std::abs(hit.t - first) > 2.0 * window / samples) ++misses;
+  }
+  EXPECT_GT(crossings, 500);
+  EXPECT_EQ(misses, 0);
+}
+
 TEST(Quadric, CutAwaySweepLetsTheRayThroughToTheFarInsideWall) {
   const Matrix4 id = Matrix4::identity();
   SurfaceHit h;
