@@ -172,6 +172,14 @@ class SceneBuilder : public RiTarget {
   using PrimitiveBuilder = void (SceneBuilder::*)(const PrimitiveRequest&, const ParamList&, const SourceLoc&);
   static PrimitiveBuilder find_primitive_builder(const std::string& request);
   void add_sphere(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  // The other quadrics (scene_builder_quadrics.cpp).
+  void add_cone(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_cylinder(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_disk(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_paraboloid(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_hyperboloid(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_torus(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_quadric(Quadric quadric, const PrimitiveRequest& r, const SourceLoc& loc);
   // Moves a tessellated surface from the current object space to the world and stores it with
   // `material` (from make_material). Returns how many triangles were kept (degenerate ones and
   // those beyond the float range in world space are dropped); false from reserve_frame_memory
