@@ -189,6 +189,44 @@ TEST(SubdivisionSurface, PlanarGridStaysPlanar) {
   }
 }
 
+TEST(SubdivisionSurface, PlanarFansAroundExtraordinaryVerticesStayPlanar) {
+  // k quads around a centre vertex of valence k (3, 5, 6: the extraordinary masks), in z = 0,
+  // and a pentagon with a triangle beside it (n-gons), all wound for +z.
+  for (int k : {3, 5, 6}) {
+    SCOPED_TRACE(k);
+    SubdivisionMeshRequest r;
+    r.scheme = "catmull-clark";
+    r.P.push_back({0, 0, 0});
+    for (int i = 0; i < 2 * k; ++i) {
+      float angle = float(i) * 3.14159265f / float(k), radius = i % 2 == 0 ? 1.0f : 1.5f;
+      r.P.push_back({radius * std::cos(angle), radius * std::sin(angle), 0});
+    }
+    for (int i = 0; i < k; ++i) {
+      r.nvertices.push_back(4);
+      r.vertices.insert(r.vertices.end(), {0, 1 + 2 * i, 2 + 2 * i, 1 + (2 * i + 2) % (2 * k)});
+    }
+    add_tag(r, "interpolateboundary", {1}, {});
+    SubdivisionTessellation t = tessellate_subdivision_mesh(r);
+    ASSERT_TRUE(t.ok()) << t.error;
+    expect_well_formed(t.mesh);
+    for (const Vec3f& p : t.mesh.P) EXPECT_EQ(p.z, 0.0f);
+    for (const Vec3f& n : t.mesh.N) EXPECT_NEAR(length(n - Vec3f{0, 0, 1}), 0.0f, 1e-5f);
+    EXPECT_TRUE(has_point(t.mesh, {0, 0, 0}));  // the centre's limit, by symmetry
+  }
+  SubdivisionMeshRequest r;
+  r.scheme = "catmull-clark";
+  r.P = {{0, 0, 0}, {2, 0, 0}, {3, 1, 0}, {1, 2, 0}, {-1, 1, 0}, {4, 3, 0}};
+  r.nvertices = {5, 3};
+  r.vertices = {0, 1, 2, 3, 4, 2, 5, 3};
+  add_tag(r, "interpolateboundary", {}, {});
+  SubdivisionTessellation t = tessellate_subdivision_mesh(r);
+  ASSERT_TRUE(t.ok()) << t.error;
+  expect_well_formed(t.mesh);
+  for (const Vec3f& p : t.mesh.P) EXPECT_EQ(p.z, 0.0f);
+  for (const Vec3f& n : t.mesh.N) EXPECT_NEAR(length(n - Vec3f{0, 0, 1}), 0.0f, 1e-5f);
+  for (size_t k = 0; k < t.mesh.triangle_count(); ++k) EXPECT_GT(geometric_normal(t.mesh, k).z, 0.0f);
+}
+
 TEST(SubdivisionSurface, FullyCreasedCubeKeepsItsCornersAndFaces) {
   SubdivisionMeshRequest r = cube();
   crease_every_cube_edge(r, kInfiniteSharpness);
