@@ -50,11 +50,12 @@ struct SurfaceSet {
     uint32_t i;
     return locate(surface, i) != Kind::Sphere;
   }
-  // True for the triangles of tessellated surfaces: pieces of a larger surface, often smaller
-  // than a ray's footprint, which together cover it without gaps.
+  // True for the triangles of tessellated surfaces and the faces of polygon meshes: pieces of a
+  // larger surface, often smaller than a ray's footprint, which together cover it without gaps.
   bool is_piece(uint32_t surface) const {
     uint32_t i;
-    return locate(surface, i) == Kind::Triangle;
+    const Kind kind = locate(surface, i);
+    return kind == Kind::Triangle || (kind == Kind::Polygon && polygons[i].piece);
   }
   // The normal shading uses at p: the geometric one, except on triangles with vertex normals.
   Vec3f shading_normal(uint32_t surface, const Vec3f& p) const;
