@@ -180,6 +180,8 @@ class SceneBuilder : public RiTarget {
   void add_hyperboloid(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
   void add_torus(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
   void add_quadric(Quadric quadric, const PrimitiveRequest& r, const SourceLoc& loc);
+  // SubdivisionMesh, tessellated to its limit surface (scene_builder_subdivision.cpp).
+  void add_subdivision_mesh(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
   // Moves a tessellated surface from the current object space to the world and stores it with
   // `material` (from make_material). Returns how many triangles were kept (degenerate ones and
   // those beyond the float range in world space are dropped); false from reserve_frame_memory

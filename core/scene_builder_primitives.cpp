@@ -28,6 +28,7 @@ SceneBuilder::PrimitiveBuilder SceneBuilder::find_primitive_builder(const std::s
       {"Paraboloid", &SceneBuilder::add_paraboloid},
       {"Hyperboloid", &SceneBuilder::add_hyperboloid},
       {"Torus", &SceneBuilder::add_torus},
+      {"SubdivisionMesh", &SceneBuilder::add_subdivision_mesh},
   };
   for (const auto& [name, builder] : kBuilders)
     if (name == request) return builder;
