@@ -98,6 +98,7 @@ void SceneBuilder::world_begin(const SourceLoc& loc) {
     frame_skipped_ = callbacks_.frame_selected && !callbacks_.frame_selected(frame_number_);
   }
   saved_attributes_.push_back(attributes_);
+  world_attribute_depth_ = saved_attributes_.size();
   saved_ctm_.push_back(ctm_);
   in_world_ = true;
   start_scene(loc);

@@ -269,6 +269,9 @@ class SceneBuilder : public RiTarget {
   // though they light nothing in darc.
   std::set<std::string> area_light_handles_;
   RisPatterns ris_patterns_;  // RIS Pattern requests by handle, for Bxdf references
+  // saved_attributes_.size() inside the world block: the states saved from there on are the
+  // world's own (a RIS Light is switched on in all of them, scene_builder_ris.cpp).
+  size_t world_attribute_depth_ = 0;
   // This frame's primitive requests that darc does not implement, by request name.
   std::map<std::string, int> skipped_primitives_;
   uint32_t next_strand_id_ = 0;

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+
 #include "core/ris_bxdf_mapping.h"
 #include "core/ris_light_mapping.h"
 #include "core/scene_builder.h"
@@ -37,6 +39,15 @@ void SceneBuilder::light(const std::string& name, const std::string& handle, con
     return;
   }
   add_light(m.shader, handle, m.params, loc, m.casts_shadows);
+  // RenderMan 21+ lights are scene objects, not attributes: exporters wrap each in its own
+  // AttributeBegin/End (for its transform), and it lights everything after it unless Illuminate
+  // switches it off. So it is on in every enclosing attribute state of the world block too.
+  const auto it = light_handles_.find(handle);
+  if (!in_world_ || it == light_handles_.end()) return;
+  for (size_t i = world_attribute_depth_; i < saved_attributes_.size(); ++i) {
+    std::vector<uint32_t>& on = saved_attributes_[i].lights_on;
+    if (std::find(on.begin(), on.end(), it->second) == on.end()) on.push_back(it->second);
+  }
 }
 
 void SceneBuilder::pattern(const std::string& name, const std::string& handle, const ParamList& params,

@@ -314,6 +314,35 @@ Sphere 2 -1 1 360)");
   EXPECT_EQ(s.materials[s.sphere_material[1]].lights, (std::vector<uint32_t>{0, 1}));
 }
 
+TEST(RisLight, ALightInItsOwnAttributeBlockStillLightsWhatFollows) {
+  Built b = world(R"(AttributeBegin
+  AttributeBegin
+    Translate 0 5 0
+    Light "PxrSphereLight" "bulb"
+  AttributeEnd
+  Sphere 1 -1 1 360
+AttributeEnd
+Sphere 2 -1 1 360
+LightSource "pointlight" "lamp"
+AttributeBegin
+  Illuminate "bulb" 0
+  Sphere 3 -1 1 360
+AttributeEnd
+AttributeBegin
+  LightSource "pointlight" "scoped"
+AttributeEnd
+Sphere 4 -1 1 360)");
+  ASSERT_EQ(b.scenes.size(), 1u);
+  const Scene& s = b.scenes[0];
+  ASSERT_EQ(s.lights.size(), 3u);
+  ASSERT_EQ(s.spheres.size(), 4u);
+  EXPECT_EQ(s.materials[s.sphere_material[0]].lights, (std::vector<uint32_t>{0}));
+  EXPECT_EQ(s.materials[s.sphere_material[1]].lights, (std::vector<uint32_t>{0})) << "RIS: a light is a scene object";
+  EXPECT_EQ(s.materials[s.sphere_material[2]].lights, (std::vector<uint32_t>{1})) << "Illuminate still switches it";
+  EXPECT_EQ(s.materials[s.sphere_material[3]].lights, (std::vector<uint32_t>{0, 1}))
+      << "a LightSource keeps the RI rule: off after its AttributeEnd";
+}
+
 TEST(RisIntegrator, TheIntegratorIsRecordedForTheFrameAndIgnoredInsideTheWorld) {
   Built b = build(R"(Integrator "PxrPathTracer" "pt" "int maxPathLength" [5]
 WorldBegin
