@@ -37,11 +37,11 @@ bool contains(const std::string& s, const std::string& part) { return s.find(par
 Material sphere_material(const std::string& body, Built* out = nullptr) {
   Built b = build("WorldBegin\n" + body + "\nSphere 1 -1 1 360\nWorldEnd\n");
   EXPECT_TRUE(errors(b).empty()) << errors(b)[0].str();
-  if (b.scenes.size() != 1 || b.scenes[0].spheres.empty()) {
+  if (b.scenes.size() != 1 || b.scenes[0].surfaces.spheres.empty()) {
     ADD_FAILURE() << "no sphere";
     return {};
   }
-  Material m = b.scenes[0].materials[b.scenes[0].sphere_material[0]];
+  Material m = b.scenes[0].materials[b.scenes[0].surfaces.sphere_material[0]];
   if (out) *out = std::move(b);
   return m;
 }
@@ -310,8 +310,8 @@ Sphere 2 -1 1 360)");
   ASSERT_EQ(b.scenes.size(), 1u);
   const Scene& s = b.scenes[0];
   ASSERT_EQ(s.lights.size(), 2u);
-  EXPECT_EQ(s.materials[s.sphere_material[0]].lights, (std::vector<uint32_t>{1}));
-  EXPECT_EQ(s.materials[s.sphere_material[1]].lights, (std::vector<uint32_t>{0, 1}));
+  EXPECT_EQ(s.materials[s.surfaces.sphere_material[0]].lights, (std::vector<uint32_t>{1}));
+  EXPECT_EQ(s.materials[s.surfaces.sphere_material[1]].lights, (std::vector<uint32_t>{0, 1}));
 }
 
 TEST(RisLight, ALightInItsOwnAttributeBlockStillLightsWhatFollows) {
@@ -335,11 +335,13 @@ Sphere 4 -1 1 360)");
   ASSERT_EQ(b.scenes.size(), 1u);
   const Scene& s = b.scenes[0];
   ASSERT_EQ(s.lights.size(), 3u);
-  ASSERT_EQ(s.spheres.size(), 4u);
-  EXPECT_EQ(s.materials[s.sphere_material[0]].lights, (std::vector<uint32_t>{0}));
-  EXPECT_EQ(s.materials[s.sphere_material[1]].lights, (std::vector<uint32_t>{0})) << "RIS: a light is a scene object";
-  EXPECT_EQ(s.materials[s.sphere_material[2]].lights, (std::vector<uint32_t>{1})) << "Illuminate still switches it";
-  EXPECT_EQ(s.materials[s.sphere_material[3]].lights, (std::vector<uint32_t>{0, 1}))
+  ASSERT_EQ(s.surfaces.spheres.size(), 4u);
+  EXPECT_EQ(s.materials[s.surfaces.sphere_material[0]].lights, (std::vector<uint32_t>{0}));
+  EXPECT_EQ(s.materials[s.surfaces.sphere_material[1]].lights, (std::vector<uint32_t>{0}))
+      << "RIS: a light is a scene object";
+  EXPECT_EQ(s.materials[s.surfaces.sphere_material[2]].lights, (std::vector<uint32_t>{1}))
+      << "Illuminate still switches it";
+  EXPECT_EQ(s.materials[s.surfaces.sphere_material[3]].lights, (std::vector<uint32_t>{0, 1}))
       << "a LightSource keeps the RI rule: off after its AttributeEnd";
 }
 
@@ -371,8 +373,8 @@ ObjectInstance "ball"
 WorldEnd
 )");
   ASSERT_EQ(b.scenes.size(), 1u);
-  ASSERT_EQ(b.scenes[0].spheres.size(), 1u);
-  EXPECT_EQ(b.scenes[0].materials[b.scenes[0].sphere_material[0]].surface, "matte");
+  ASSERT_EQ(b.scenes[0].surfaces.spheres.size(), 1u);
+  EXPECT_EQ(b.scenes[0].materials[b.scenes[0].surfaces.sphere_material[0]].surface, "matte");
 }
 
 }  // namespace
