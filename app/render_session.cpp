@@ -278,6 +278,7 @@ int run_render_session(const AppOptions& o) {
                                {"build_seconds", stats.build_seconds},
                                {"render_seconds", stats.render_seconds},
                                {"counters", counters_json(stats.counters)}};
+    if (!scene.output.integrator.empty()) frame_stats["integrator"] = integrator_json(scene.output.integrator);
     if (stats_per_frame) {
       const std::string stats_path = substitute_frame_number(o.stats_path, scene.output.frame_number);
       const std::string error = write_stats_file(stats_path, nlohmann::json::array({std::move(frame_stats)}), run_stats());

@@ -39,4 +39,10 @@ std::string write_stats_file(const std::string& path, const nlohmann::json& fram
   return {};
 }
 
+nlohmann::json integrator_json(const std::string& requested) {
+  return {{"requested", requested},
+          {"used", "darc"},
+          {"note", "darc renders with its own integrator; the requested one and its parameters were not used"}};
+}
+
 }  // namespace darc

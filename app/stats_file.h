@@ -14,4 +14,8 @@ namespace darc {
 std::string write_stats_file(const std::string& path, const nlohmann::json& frames,
                              const nlohmann::json& run = nlohmann::json::object());
 
+// A frame's "integrator" entry for a file with a RenderMan Integrator request: the integrator
+// the file named, and that darc's own was used (darc has one integrator per hider).
+nlohmann::json integrator_json(const std::string& requested);
+
 }  // namespace darc

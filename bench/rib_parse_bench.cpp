@@ -69,6 +69,10 @@ class NullTarget : public RiTarget {
   void displacement(const std::string&, const ParamList&, const SourceLoc&) override {}
   void light_source(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
   void area_light_source(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
+  void bxdf(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
+  void light(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
+  void pattern(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
+  void integrator(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
   void illuminate(const std::string&, bool, const SourceLoc&) override {}
   void basis(const BasisArg&, int, const BasisArg&, int, const SourceLoc&) override {}
   void object_begin(const std::string&, const SourceLoc&) override {}

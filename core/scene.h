@@ -78,6 +78,9 @@ struct OutputSettings {
   // Option "trace" "int maxdepth": the longest chain of reflection and refraction rays (PRMan's
   // name and default). Shadow rays do not count.
   int trace_max_depth = 10;
+  // The RenderMan 21+ Integrator the file asks for ("PxrPathTracer"; empty: none). darc renders
+  // with its own integrator whatever it says; --stats reports it.
+  std::string integrator;
 };
 
 // The BVH: on the benchmark scenes at 160x120 (callgrind, instructions in render_frame) the

@@ -98,6 +98,7 @@ void SceneBuilder::world_begin(const SourceLoc& loc) {
     frame_skipped_ = callbacks_.frame_selected && !callbacks_.frame_selected(frame_number_);
   }
   saved_attributes_.push_back(attributes_);
+  world_attribute_depth_ = saved_attributes_.size();
   saved_ctm_.push_back(ctm_);
   in_world_ = true;
   start_scene(loc);
@@ -373,10 +374,11 @@ void SceneBuilder::displacement(const std::string& name, const ParamList&, const
 }
 
 void SceneBuilder::add_light(const std::string& name, const std::string& handle, const ParamList& params,
-                             const SourceLoc& loc) {
+                             const SourceLoc& loc, std::optional<bool> casts_shadows) {
   check_light_positions(params, ctm_);  // before WorldBegin: in camera space
   ParamList checked = checked_shader_parameters("LightSource", name, params, diag_, loc);
-  LightDesc d{name, std::move(checked), ctm_, loc, light_casts_shadows(handle, params, loc)};
+  const bool shadows = casts_shadows ? *casts_shadows : light_casts_shadows(handle, params, loc);
+  LightDesc d{name, std::move(checked), ctm_, loc, shadows};
   if (!in_world_) {
     diag_.warning_once("prelight", loc, "LightSource",
                        "light declared before WorldBegin: placed relative to the camera and used for every frame");

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/graphics_state.h"
+#include "core/ris_patterns.h"
 #include "core/scene.h"
 #include "core/triangle_mesh_data.h"
 #include "parser/diagnostics.h"
@@ -12,6 +13,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <tuple>
@@ -107,6 +109,15 @@ class SceneBuilder : public RiTarget {
                          const SourceLoc& loc) override;
   void illuminate(const std::string& handle, bool on, const SourceLoc& loc) override;
   void basis(const BasisArg& u, int ustep, const BasisArg& v, int vstep, const SourceLoc& loc) override;
+  // RenderMan 21+ (RIS) requests, mapped to darc's shaders and lights (scene_builder_ris.cpp).
+  void bxdf(const std::string& name, const std::string& handle, const ParamList& params,
+            const SourceLoc& loc) override;
+  void light(const std::string& name, const std::string& handle, const ParamList& params,
+             const SourceLoc& loc) override;
+  void pattern(const std::string& name, const std::string& handle, const ParamList& params,
+               const SourceLoc& loc) override;
+  void integrator(const std::string& name, const std::string& handle, const ParamList& params,
+                  const SourceLoc& loc) override;
 
   void object_begin(const std::string& handle, const SourceLoc& loc) override;
   void object_end(const SourceLoc& loc) override;
@@ -166,7 +177,9 @@ class SceneBuilder : public RiTarget {
   // it is singular, as the camera must be inverted.
   Matrix4 checked_camera_transform(const SourceLoc& world_begin);
   void check_crop_window(OutputSettings& out);
-  void add_light(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc& loc);
+  // casts_shadows: given by a RIS Light; else from "shadowname" and Attribute "light".
+  void add_light(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc& loc,
+                 std::optional<bool> casts_shadows = std::nullopt);
   // The builders behind primitive(), one per request (after the common checks: not recording
   // an object, in the world, the frame built, the geometry noted).
   using PrimitiveBuilder = void (SceneBuilder::*)(const PrimitiveRequest&, const ParamList&, const SourceLoc&);
@@ -274,8 +287,13 @@ class SceneBuilder : public RiTarget {
   Matrix4 camera_to_world_;
   std::map<std::string, Matrix4> named_spaces_;  // CoordinateSystem, relative to world
   std::map<std::string, uint32_t> light_handles_;
-  // AreaLightSource handles: valid for Illuminate, though area lights light nothing in darc.
+  // AreaLightSource handles, and those of RIS Lights darc does not know: valid for Illuminate,
+  // though they light nothing in darc.
   std::set<std::string> area_light_handles_;
+  RisPatterns ris_patterns_;  // RIS Pattern requests by handle, for Bxdf references
+  // saved_attributes_.size() inside the world block: the states saved from there on are the
+  // world's own (a RIS Light is switched on in all of them, scene_builder_ris.cpp).
+  size_t world_attribute_depth_ = 0;
   // This frame's primitive requests that darc does not implement, by request name.
   std::map<std::string, int> skipped_primitives_;
   uint32_t next_strand_id_ = 0;

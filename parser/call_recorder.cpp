@@ -187,6 +187,28 @@ void CallRecorder::basis(const BasisArg& ubasis, int ustep, const BasisArg& vbas
   keep("Basis", loc, [ubasis, ustep, vbasis, vstep, loc](RiTarget& t) { t.basis(ubasis, ustep, vbasis, vstep, loc); });
 }
 
+// --- RenderMan 21+ (RIS) ---
+
+void CallRecorder::bxdf(const std::string& name, const std::string& handle, const ParamList& params,
+                        const SourceLoc& loc) {
+  keep("Bxdf", loc, [name, handle, params, loc](RiTarget& t) { t.bxdf(name, handle, params, loc); });
+}
+
+void CallRecorder::light(const std::string& name, const std::string& handle, const ParamList& params,
+                         const SourceLoc& loc) {
+  keep("Light", loc, [name, handle, params, loc](RiTarget& t) { t.light(name, handle, params, loc); });
+}
+
+void CallRecorder::pattern(const std::string& name, const std::string& handle, const ParamList& params,
+                           const SourceLoc& loc) {
+  keep("Pattern", loc, [name, handle, params, loc](RiTarget& t) { t.pattern(name, handle, params, loc); });
+}
+
+void CallRecorder::integrator(const std::string& name, const std::string& handle, const ParamList& params,
+                              const SourceLoc& loc) {
+  keep("Integrator", loc, [name, handle, params, loc](RiTarget& t) { t.integrator(name, handle, params, loc); });
+}
+
 void CallRecorder::object_begin(const std::string& handle, const SourceLoc& loc) {
   keep("ObjectBegin", loc, [handle, loc](RiTarget& t) { t.object_begin(handle, loc); });
 }

@@ -80,6 +80,15 @@ class CallRecorder : public RiTarget {
                          const SourceLoc& loc) override;
   void illuminate(const std::string& handle, bool on, const SourceLoc& loc) override;
   void basis(const BasisArg& ubasis, int ustep, const BasisArg& vbasis, int vstep, const SourceLoc& loc) override;
+  // RenderMan 21+ (RIS)
+  void bxdf(const std::string& name, const std::string& handle, const ParamList& params,
+            const SourceLoc& loc) override;
+  void light(const std::string& name, const std::string& handle, const ParamList& params,
+             const SourceLoc& loc) override;
+  void pattern(const std::string& name, const std::string& handle, const ParamList& params,
+               const SourceLoc& loc) override;
+  void integrator(const std::string& name, const std::string& handle, const ParamList& params,
+                  const SourceLoc& loc) override;
   void object_begin(const std::string& handle, const SourceLoc& loc) override;
   void object_end(const SourceLoc& loc) override;
   void object_instance(const std::string& handle, const SourceLoc& loc) override;

@@ -47,7 +47,9 @@ bool parse_declaration(std::string_view text, ParamDecl& decl, std::string* name
   const auto set_type = [&decl](auto& ctx) { decl.type = x3::_attr(ctx); };
   unsigned array_size = 1;
   const auto set_size = [&array_size](auto& ctx) { array_size = x3::_attr(ctx); };
-  const auto declaration = -x3::lexeme[storage_class_keywords()[set_class] >> word_end] >>
+  const auto set_reference = [&decl](auto&) { decl.reference = true; };
+  const auto declaration = -x3::lexeme[x3::lit("reference")[set_reference] >> word_end] >>
+                           -x3::lexeme[storage_class_keywords()[set_class] >> word_end] >>
                            x3::lexeme[type_keywords()[set_type] >> word_end] >>
                            -(x3::lit('[') >> x3::uint_[set_size] >> x3::lit(']'));
   decl = ParamDecl{};
@@ -157,8 +159,9 @@ std::string to_string(ParamType t) {
 }
 
 std::string to_string(const ParamDecl& d) {
-  if (d.array_size == 1) return fmt::format("{} {}", to_string(d.storage), to_string(d.type));
-  return fmt::format("{} {}[{}]", to_string(d.storage), to_string(d.type), d.array_size);
+  const char* reference = d.reference ? "reference " : "";
+  if (d.array_size == 1) return fmt::format("{}{} {}", reference, to_string(d.storage), to_string(d.type));
+  return fmt::format("{}{} {}[{}]", reference, to_string(d.storage), to_string(d.type), d.array_size);
 }
 
 size_t Param::element_count() const {

@@ -18,16 +18,19 @@ struct ParamDecl {
   StorageClass storage = StorageClass::Uniform;
   ParamType type = ParamType::Float;
   int array_size = 1;  // "float[4]" -> 4
+  // RenderMan 21+ "reference color diffuseColor" ["pattern:output"]: the value is a connection to
+  // a Pattern's output, written as strings, instead of a value of the type.
+  bool reference = false;
 
   // Numbers per element: 3 for point/vector/normal/color, 4 hpoint, 16 matrix, else 1;
   // times array_size.
   int components() const;
-  bool is_string() const { return type == ParamType::String; }
+  bool is_string() const { return type == ParamType::String || reference; }
   bool operator==(const ParamDecl&) const = default;
 };
 
 // Parses a declaration such as "uniform float[3]", " varying point", "vertex hpoint",
-// "constant color", "string", "int". Returns nullopt when it is not a valid declaration.
+// "constant color", "string", "int", "reference color". Returns nullopt when it is not a valid declaration.
 std::optional<ParamDecl> parse_param_decl(const std::string& text);
 // Splits an inline token "vertex point P" into its declaration and name. If the token has no
 // inline declaration, returns nullopt and sets name to the trimmed token.

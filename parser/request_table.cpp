@@ -246,6 +246,15 @@ void basis(Ctx& c) {
   c.target.basis(ubasis, ustep, vbasis, vstep, c.loc);
 }
 
+// --- RenderMan 21+ (RIS) shading: plugin name, handle, parameters ---
+
+template <void (RiTarget::*Call)(const std::string&, const std::string&, const ParamList&, const SourceLoc&)>
+void ris_node(Ctx& c) {
+  const std::string name = c.args.string("the plugin name");
+  const std::string handle = c.args.handle("the handle");
+  (c.target.*Call)(name, handle, c.args.param_list(c.name), c.loc);
+}
+
 // --- instancing ---
 
 void object_begin(Ctx& c) {
@@ -385,6 +394,11 @@ Table make_table() {
       {"GeneralPolygon", general_polygon},
       {"PointsPolygons", points_polygons},
       {"PointsGeneralPolygons", points_general_polygons},
+      // RenderMan 21+ (RIS)
+      {"Bxdf", ris_node<&RiTarget::bxdf>},
+      {"Light", ris_node<&RiTarget::light>},
+      {"Pattern", ris_node<&RiTarget::pattern>},
+      {"Integrator", ris_node<&RiTarget::integrator>},
       // Accepted without effect.
       {"Shutter", ignored},
       {"ShadingRate", ignored},

@@ -118,6 +118,19 @@ class RiTarget {
   virtual void illuminate(const std::string& handle, bool on, const SourceLoc& loc) = 0;
   virtual void basis(const BasisArg& ubasis, int ustep, const BasisArg& vbasis, int vstep, const SourceLoc& loc) = 0;
 
+  // RenderMan 21+ (RIS) shading requests, each with its plugin name, its handle and its
+  // parameters (a "reference" parameter names a Pattern output: "handle:output"). Bxdf is an
+  // attribute like Surface, Light both a light and its geometry, Pattern a named node that a
+  // later Bxdf may reference, Integrator an option (core/ris_mapping.h maps them to darc's own).
+  virtual void bxdf(const std::string& name, const std::string& handle, const ParamList& params,
+                    const SourceLoc& loc) = 0;
+  virtual void light(const std::string& name, const std::string& handle, const ParamList& params,
+                     const SourceLoc& loc) = 0;
+  virtual void pattern(const std::string& name, const std::string& handle, const ParamList& params,
+                       const SourceLoc& loc) = 0;
+  virtual void integrator(const std::string& name, const std::string& handle, const ParamList& params,
+                          const SourceLoc& loc) = 0;
+
   // Instancing
   virtual void object_begin(const std::string& handle, const SourceLoc& loc) = 0;
   virtual void object_end(const SourceLoc& loc) = 0;

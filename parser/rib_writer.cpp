@@ -279,6 +279,32 @@ void RibWriter::basis(const BasisArg& ubasis, int ustep, const BasisArg& vbasis,
   begin_line("Basis") << ' ' << rib_basis(ubasis) << ' ' << ustep << ' ' << rib_basis(vbasis) << ' ' << vstep << '\n';
 }
 
+// --- RenderMan 21+ (RIS): "Request" "plugin" "handle" params ---
+
+void RibWriter::ris_node(const char* request, const std::string& name, const std::string& handle,
+                         const ParamList& params) {
+  begin_line(request) << ' ' << rib_string(name) << ' ' << rib_handle(handle);
+  write_params(params);
+}
+
+void RibWriter::bxdf(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc&) {
+  ris_node("Bxdf", name, handle, params);
+}
+
+void RibWriter::light(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc&) {
+  ris_node("Light", name, handle, params);
+}
+
+void RibWriter::pattern(const std::string& name, const std::string& handle, const ParamList& params,
+                        const SourceLoc&) {
+  ris_node("Pattern", name, handle, params);
+}
+
+void RibWriter::integrator(const std::string& name, const std::string& handle, const ParamList& params,
+                           const SourceLoc&) {
+  ris_node("Integrator", name, handle, params);
+}
+
 void RibWriter::object_begin(const std::string& handle, const SourceLoc&) {
   begin_line("ObjectBegin") << ' ' << rib_handle(handle) << '\n';
   ++depth_;

@@ -68,6 +68,15 @@ class RibWriter : public RiTarget {
                          const SourceLoc& loc) override;
   void illuminate(const std::string& handle, bool on, const SourceLoc& loc) override;
   void basis(const BasisArg& ubasis, int ustep, const BasisArg& vbasis, int vstep, const SourceLoc& loc) override;
+  // RenderMan 21+ (RIS)
+  void bxdf(const std::string& name, const std::string& handle, const ParamList& params,
+            const SourceLoc& loc) override;
+  void light(const std::string& name, const std::string& handle, const ParamList& params,
+             const SourceLoc& loc) override;
+  void pattern(const std::string& name, const std::string& handle, const ParamList& params,
+               const SourceLoc& loc) override;
+  void integrator(const std::string& name, const std::string& handle, const ParamList& params,
+                  const SourceLoc& loc) override;
 
   void object_begin(const std::string& handle, const SourceLoc& loc) override;
   void object_end(const SourceLoc& loc) override;
@@ -91,6 +100,8 @@ class RibWriter : public RiTarget {
   void open_block(const char* request);
   void close_block(const char* request);
   void write_params(const ParamList& params);
+  // A RIS request: its name, the plugin name, the handle, the parameters.
+  void ris_node(const char* request, const std::string& name, const std::string& handle, const ParamList& params);
 
   std::ostream& out_;
   int depth_ = 0;

@@ -14,11 +14,11 @@ namespace {
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
 TEST(KnownRequests, RenderManRequestsAreNotSupportedNotUnknown) {
-  auto r = parse_rib(R"RIB(Bxdf "PxrDisney" "base" "float metallic" [1]
-Pattern "PxrTexture" "tex" "string filename" ["a.tex"]
-Bxdf "PxrSurface" "s2"
-Integrator "PxrPathTracer" "pt"
-  Light "PxrRectLight" "key" "float intensity" [4]
+  auto r = parse_rib(R"RIB(LightFilter "PxrBlockerLightFilter" "b" "float density" [1]
+SampleFilter "PxrBackgroundSampleFilter" "bg"
+LightFilter "PxrRodLightFilter" "rod"
+DisplayFilter "PxrBackgroundDisplayFilter" "bgd"
+  Displace "PxrDisplace" "disp" "float dispAmount" [0.1]
 DisplayChannel "color Ci"
 Camera "main"
 Procedural2 "DynamicLoad" "SubdivisionMesh" "string dsoname" ["x"]
@@ -29,10 +29,10 @@ WorldBegin
   EXPECT_TRUE(r->ok) << "a request darc does not support is a warning";
   const auto warnings = r->warnings();
   ASSERT_EQ(warnings.size(), 9u) << "one warning per request name";
-  EXPECT_EQ(warnings[0].message, "request \"Bxdf\" (RenderMan 19+ RIB) is not supported: skipped");
+  EXPECT_EQ(warnings[0].message, "request \"LightFilter\" (RenderMan 19+ RIB) is not supported: skipped");
   EXPECT_EQ(warnings[0].loc.str(), "test.rib:1:1");
-  EXPECT_EQ(warnings[0].request, "Bxdf");
-  EXPECT_EQ(warnings[3].request, "Light");
+  EXPECT_EQ(warnings[0].request, "LightFilter");
+  EXPECT_EQ(warnings[3].request, "Displace");
   EXPECT_EQ(warnings[3].loc.str(), "test.rib:5:3");
   EXPECT_EQ(warnings[4].message, "request \"DisplayChannel\" (RI Spec 3.4 / PRMan) is not supported: skipped");
   EXPECT_EQ(warnings[8].message, "unknown request \"Frobnicate\": skipped");
@@ -42,7 +42,7 @@ WorldBegin
 
 TEST(KnownRequests, SkippedPrimitivesAreToldToTheTarget) {
   auto r = parse_rib(
-      "WorldBegin\nBlobby 1 [1001 0] [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1] [\"\"]\nBxdf \"PxrDiffuse\" \"d\"\n"
+      "WorldBegin\nBlobby 1 [1001 0] [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1] [\"\"]\nDisplace \"PxrDisplace\" \"d\"\n"
       "Geometry \"teapot\"\nBlobby 1 [1001 0] [2 0 0 0 0 2 0 0 0 0 2 0 0 0 0 1] [\"\"]\nWorldEnd\n");
   EXPECT_EQ(r->target.skipped_primitives, (std::vector<std::string>{"Blobby", "Geometry", "Blobby"}))
       << "geometry only, and every call (the warning is once per name)";

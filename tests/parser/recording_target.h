@@ -136,6 +136,18 @@ class RecordingTarget : public RiTarget {
   void light_source(const std::string& n, const std::string& h, const ParamList& p, const SourceLoc& loc) override {
     add("LightSource", {}, {n, h}, p, loc);
   }
+  void bxdf(const std::string& n, const std::string& h, const ParamList& p, const SourceLoc& loc) override {
+    add("Bxdf", {}, {n, h}, p, loc);
+  }
+  void light(const std::string& n, const std::string& h, const ParamList& p, const SourceLoc& loc) override {
+    add("Light", {}, {n, h}, p, loc);
+  }
+  void pattern(const std::string& n, const std::string& h, const ParamList& p, const SourceLoc& loc) override {
+    add("Pattern", {}, {n, h}, p, loc);
+  }
+  void integrator(const std::string& n, const std::string& h, const ParamList& p, const SourceLoc& loc) override {
+    add("Integrator", {}, {n, h}, p, loc);
+  }
   void area_light_source(const std::string& n, const std::string& h, const ParamList& p,
                          const SourceLoc& loc) override {
     add("AreaLightSource", {}, {n, h}, p, loc);

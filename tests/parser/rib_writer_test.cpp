@@ -69,6 +69,25 @@ TEST(RibWriter, CanonicalFormWithIndentationAndInlineDeclarations) {
             "FrameEnd\n");
 }
 
+TEST(RibWriter, RisRequestsRoundTrip) {
+  const std::string rib = R"RIB(Integrator "PxrPathTracer" "pt" "int maxPathLength" [4]
+WorldBegin
+Pattern "PxrHairColor" "hc" "float melanin" [0.4]
+Bxdf "PxrMarschnerHair" "hair" "reference color diffuseColor" ["hc:resultDiffuse"]
+Light "PxrDistantLight" 3 "float exposure" [1]
+WorldEnd
+)RIB";
+  const Written w = write_and_record(rib);
+  EXPECT_EQ(w.text,
+            "Integrator \"PxrPathTracer\" \"pt\" \"uniform int maxPathLength\" [4]\n"
+            "WorldBegin\n"
+            "  Pattern \"PxrHairColor\" \"hc\" \"uniform float melanin\" [0.4]\n"
+            "  Bxdf \"PxrMarschnerHair\" \"hair\" \"reference uniform color diffuseColor\" [\"hc:resultDiffuse\"]\n"
+            "  Light \"PxrDistantLight\" 3 \"uniform float exposure\" [1]\n"
+            "WorldEnd\n");
+  expect_round_trip(rib);
+}
+
 TEST(RibWriter, NumbersAreShortestRoundTrip) {
   EXPECT_EQ(rib_number(0.1), "0.1");
   EXPECT_EQ(rib_number(0.1f), "0.1");
