@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
   }
   const Scene& scene = loaded->scene;
   std::printf("scene %s: %dx%d, %zu curve segments, %zu spheres, %zu polygons; parse %.3f s\n", rib.c_str(),
-              scene.output.xres, scene.output.yres, scene.curves.size(), scene.spheres.size(), scene.polygons.size(),
+              scene.output.xres, scene.output.yres, scene.curves.size(), scene.surfaces.spheres.size(), scene.surfaces.polygons.size(),
               loaded->parse_seconds);
 
   uint64_t rss_before = resident_bytes();

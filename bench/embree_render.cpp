@@ -87,11 +87,11 @@ std::optional<std::pair<ShadingPoint, uint32_t>> shading_point(const RenderConte
     case EmbreeGeometry::Kind::Polygons:
     case EmbreeGeometry::Kind::Spheres: {
       const bool is_sphere = g.kind == EmbreeGeometry::Kind::Spheres;
-      material = is_sphere ? ctx.scene.sphere_material[i] : ctx.scene.polygon_material[i];
+      material = is_sphere ? ctx.scene.surfaces.sphere_material[i] : ctx.scene.surfaces.polygon_material[i];
       const Material& m = ctx.scene.materials[material];
       // darc's own normal: the polygon's plane normal (not the triangle's winding), the sphere's
       // from its intersector (stored in Ng by the user geometry).
-      Vec3f ng = g.kind == EmbreeGeometry::Kind::Triangles ? ctx.scene.polygons[i].normal
+      Vec3f ng = g.kind == EmbreeGeometry::Kind::Triangles ? ctx.scene.surfaces.polygons[i].normal
                                                            : Vec3f{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
       Vec3f n = m.flip_normals ? -ng : ng;
       if (m.sides == 1 && dot(n, ray.d) > 0) return std::nullopt;

@@ -67,8 +67,8 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
   const uint32_t i = g->source[args->primID];
   const bool is_sphere = g->kind == EmbreeGeometry::Kind::Spheres;
   SurfaceHit h;
-  if (!(is_sphere ? scene.spheres[i].intersect(ray, h) : scene.polygons[i].intersect(ray, h))) return;
-  const Material& m = scene.materials[is_sphere ? scene.sphere_material[i] : scene.polygon_material[i]];
+  if (!(is_sphere ? scene.surfaces.spheres[i].intersect(ray, h) : scene.surfaces.polygons[i].intersect(ray, h))) return;
+  const Material& m = scene.materials[is_sphere ? scene.surfaces.sphere_material[i] : scene.surfaces.polygon_material[i]];
   Vec3f n = m.flip_normals ? -h.ng : h.ng;
   if (m.sides == 1 && dot(n, ray.d) > 0) return;
   rayhit->ray.tfar = h.t;
@@ -108,8 +108,8 @@ std::unique_ptr<EmbreeScene> EmbreeScene::build(const Scene& scene, int threads,
   es->add_curves(true, stats);
   es->add_polygons(stats);
   std::vector<uint32_t> spheres;
-  for (uint32_t i = 0; i < scene.spheres.size(); ++i)
-    if (!scene.spheres[i].degenerate) spheres.push_back(i);
+  for (uint32_t i = 0; i < scene.surfaces.spheres.size(); ++i)
+    if (!scene.surfaces.spheres[i].degenerate) spheres.push_back(i);
   es->add_user_geometry(EmbreeGeometry::Kind::Spheres, std::move(spheres), stats);
   stats.setup_seconds = seconds_since(t0);
   Clock::time_point t1 = Clock::now();
@@ -182,8 +182,8 @@ void EmbreeScene::add_polygons(EmbreeBuildStats& stats) {
   g->scene = &source_;
   std::vector<Vec3f> points;
   std::vector<unsigned> triangles;
-  for (uint32_t i = 0; i < source_.polygons.size(); ++i) {
-    const PolygonShape& shape = source_.polygons[i];
+  for (uint32_t i = 0; i < source_.surfaces.polygons.size(); ++i) {
+    const PolygonShape& shape = source_.surfaces.polygons[i];
     if (!is_convex_single_loop(shape)) {
       general.push_back(i);
       continue;

@@ -78,7 +78,7 @@ class NullTarget : public RiTarget {
               const SourceLoc&) override {
     params_seen += p.params.size();
   }
-  void sphere(double, double, double, double, const ParamList&, const SourceLoc&) override {}
+  void primitive(const PrimitiveRequest&, const ParamList&, const SourceLoc&) override {}
   void polygon(const ParamList&, const SourceLoc&) override {}
   void general_polygon(const std::vector<int>&, const ParamList&, const SourceLoc&) override {}
   void points_polygons(const std::vector<int>&, const std::vector<int>&, const ParamList&, const SourceLoc&) override {}

@@ -64,25 +64,24 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
     if (length_squared(it.dPdv) == 0.0f) it.dPdv = normalize(cp[3] - cp[0]);
     plane_normal = -ray.d;
   } else {
-    const bool is_sphere = kind == Scene::PrimKind::Sphere;
-    it.material = is_sphere ? scene.sphere_material[local] : scene.polygon_material[local];
+    const SurfaceSet& surfaces = scene.surfaces;
+    it.material = surfaces.material(local);
     const Material& m = scene.materials[it.material];
-    Vec3f ng = is_sphere ? scene.spheres[local].normal_at(it.P) : scene.polygons[local].normal;
-    it.N = m.flip_normals ? -ng : ng;
+    const Vec3f sign = m.flip_normals ? Vec3f{-1, -1, -1} : Vec3f{1, 1, 1};
+    const Vec3f ng = surfaces.geometric_normal(local, it.P);
+    const Vec3f ns = surfaces.shading_normal(local, it.P);
+    it.N = mul(sign, ns);
     it.Cs = m.color;
     it.Os = m.opacity;
     plane_normal = ng;
     if (footprint) {
       it.dPdx = transfer(footprint->axis_x(t), ray.d, plane_normal);
       it.dPdy = transfer(footprint->axis_y(t), ray.d, plane_normal);
-      if (is_sphere) {
-        // The normal's change across the footprint, as the difference of the normals at its
-        // edges (exact for the sphere's first-order change, bounded for large footprints).
-        const Sphere& s = scene.spheres[local];
-        Vec3f sign = m.flip_normals ? Vec3f{-1, -1, -1} : Vec3f{1, 1, 1};
-        it.dNdx = mul(sign, s.normal_at(it.P + it.dPdx) - ng);
-        it.dNdy = mul(sign, s.normal_at(it.P + it.dPdy) - ng);
-      }
+      // The normal's change across the footprint, as the difference of the normals at its
+      // edges (exact for a sphere's first-order change, bounded for large footprints; zero on
+      // flat faces).
+      it.dNdx = mul(sign, surfaces.shading_normal(local, it.P + it.dPdx) - ns);
+      it.dNdy = mul(sign, surfaces.shading_normal(local, it.P + it.dPdy) - ns);
     }
     return it;
   }

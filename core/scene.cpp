@@ -7,8 +7,7 @@ void Scene::build_acceleration(AcceleratorKind kind) {
   std::vector<BBox> boxes;
   boxes.reserve(primitive_count());
   for (size_t i = 0; i < curves.size(); ++i) boxes.push_back(curves.segment_bounds(i));
-  for (const Sphere& s : spheres) boxes.push_back(s.bounds());
-  for (const PolygonShape& p : polygons) boxes.push_back(p.bounds());
+  for (uint32_t s = 0; s < surfaces.size(); ++s) boxes.push_back(surfaces.bounds(s));
   bounds = BBox{};
   for (const BBox& b : boxes)
     if (!b.empty()) bounds.extend(b);

@@ -7,8 +7,7 @@
 #include "core/bbox.h"
 #include "core/camera.h"
 #include "core/curve_set.h"
-#include "core/polygon.h"
-#include "core/sphere.h"
+#include "core/surface_set.h"
 #include "core/accelerator.h"
 #include "parser/param_list.h"
 #include "parser/source_loc.h"
@@ -43,6 +42,12 @@ struct Material {
   std::string emissive_area_light;  // AreaLightSource shader the geometry belongs to, if any
   ParamList area_light_params;
   Transmission transmission = Transmission::Os;
+
+  // Sides 1: true when a surface whose own normal (orientation not applied) is `n` is seen
+  // from behind along direction d, and so is not drawn. The one place the rule is written.
+  bool hides_back_of(const Vec3f& n, const Vec3f& d) const {
+    return sides == 1 && dot(flip_normals ? -n : n, d) > 0;
+  }
 };
 
 struct LightDesc {
@@ -84,9 +89,7 @@ struct Scene {
   Camera camera;
   OutputSettings output;
   CurveSet curves;
-  std::vector<Sphere> spheres;
-  std::vector<PolygonShape> polygons;
-  std::vector<uint32_t> sphere_material, polygon_material;  // per shape: index into materials
+  SurfaceSet surfaces;
   std::vector<Material> materials;
   std::vector<LightDesc> lights;
 
@@ -96,19 +99,20 @@ struct Scene {
   std::string geometry_key;
 
   // One acceleration structure over everything: primitive index p < curves.size() is a curve
-  // segment, then the spheres, then the polygons.
+  // segment, then the surfaces in SurfaceSet's order.
   Accelerator accel;
   BBox bounds;
 
-  enum class PrimKind { CurveSegment, Sphere, Polygon };
+  // The kinds the tracers tell apart: sub-pixel curve segments and surfaces (every surface
+  // request, behind SurfaceSet). `local` is the index among that kind.
+  enum class PrimKind { CurveSegment, Surface };
   PrimKind prim_kind(uint32_t p, uint32_t& local) const {
-    const uint32_t nc = uint32_t(curves.size()), ns = uint32_t(spheres.size());
+    const uint32_t nc = uint32_t(curves.size());
     if (p < nc) { local = p; return PrimKind::CurveSegment; }
-    if (p < nc + ns) { local = p - nc; return PrimKind::Sphere; }
-    local = p - nc - ns;
-    return PrimKind::Polygon;
+    local = p - nc;
+    return PrimKind::Surface;
   }
-  size_t primitive_count() const { return curves.size() + spheres.size() + polygons.size(); }
+  size_t primitive_count() const { return curves.size() + surfaces.size(); }
 
   // Builds the acceleration structure over the primitives (call once after all geometry is added).
   void build_acceleration(AcceleratorKind kind = kDefaultAccelerator);

@@ -5,6 +5,7 @@
 
 #include "core/graphics_state.h"
 #include "core/scene.h"
+#include "core/triangle_mesh_data.h"
 #include "parser/diagnostics.h"
 #include "parser/ri_target.h"
 
@@ -113,8 +114,9 @@ class SceneBuilder : public RiTarget {
 
   void curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
               const ParamList& params, const SourceLoc& loc) override;
-  void sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
-              const SourceLoc& loc) override;
+  // Sphere, the other quadrics, patches, NURBS, subdivision meshes, Points: one entry point
+  // that dispatches on the request's name (scene_builder_primitives.cpp).
+  void primitive(const PrimitiveRequest& request, const ParamList& params, const SourceLoc& loc) override;
   void polygon(const ParamList& params, const SourceLoc& loc) override;
   void general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params,
                        const SourceLoc& loc) override;
@@ -165,6 +167,16 @@ class SceneBuilder : public RiTarget {
   Matrix4 checked_camera_transform(const SourceLoc& world_begin);
   void check_crop_window(OutputSettings& out);
   void add_light(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc& loc);
+  // The builders behind primitive(), one per request (after the common checks: not recording
+  // an object, in the world, the frame built, the geometry noted).
+  using PrimitiveBuilder = void (SceneBuilder::*)(const PrimitiveRequest&, const ParamList&, const SourceLoc&);
+  static PrimitiveBuilder find_primitive_builder(const std::string& request);
+  void add_sphere(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  // Moves a tessellated surface from the current object space to the world and stores it with
+  // `material` (from make_material). Returns how many triangles were kept (degenerate ones and
+  // those beyond the float range in world space are dropped); false from reserve_frame_memory
+  // adds nothing.
+  size_t add_triangle_mesh(const TriangleMeshData& object_space, uint32_t material);
   // The common body of the four polygon requests.
   void add_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                     const std::vector<int>& indices, const ParamList& params, const char* request,

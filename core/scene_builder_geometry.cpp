@@ -260,24 +260,6 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
   report_curve_clamps(clamps, in, diag_, loc);
 }
 
-void SceneBuilder::sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
-                          const SourceLoc& loc) {
-  if (record([=](SceneBuilder& b) { b.sphere(radius, zmin, zmax, thetamax, params, loc); })) return;
-  if (skip_motion_sample()) return;
-  if (!building_geometry("Sphere", loc)) return;
-  note_geometry(replayed_id());
-  if (radius == 0 || thetamax == 0) return;  // empty surface
-  Sphere sphere = Sphere::make(radius, zmin, zmax, thetamax, ctm_);
-  const BBox box = sphere.bounds();
-  // The whole request would be dropped, so it is an error (a Curves segment or a polygon face
-  // beyond the range is only a part of its request: those are dropped with a warning).
-  if (!sphere.degenerate && !(all_finite(box.lo) && all_finite(box.hi)))
-    throw RibError(fmt::format("radius {} lies beyond the float range in world space", radius));
-  if (!reserve_frame_memory(0, 1, 0)) return;
-  scene_->spheres.push_back(std::move(sphere));
-  scene_->sphere_material.push_back(make_material(loc));
-}
-
 void SceneBuilder::polygon(const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.polygon(params, loc); })) return;
   if (skip_motion_sample()) return;
@@ -353,8 +335,8 @@ void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const s
                               beyond_float_range == 1 ? "it" : "them"));
   uint32_t material = make_material(loc);
   for (PolygonShape& s : shapes) {
-    scene_->polygons.push_back(std::move(s));
-    scene_->polygon_material.push_back(material);
+    scene_->surfaces.polygons.push_back(std::move(s));
+    scene_->surfaces.polygon_material.push_back(material);
   }
 }
 

@@ -25,8 +25,7 @@ std::string list_requests(const std::map<std::string, int>& counts) {
 BBox world_bounds(const Scene& scene) {
   BBox box;
   for (size_t i = 0; i < scene.curves.size(); ++i) box.extend(scene.curves.segment_bounds(i));
-  for (const Sphere& s : scene.spheres) box.extend(s.bounds());
-  for (const PolygonShape& p : scene.polygons) box.extend(p.bounds());
+  for (uint32_t s = 0; s < scene.surfaces.size(); ++s) box.extend(scene.surfaces.bounds(s));
   return box;
 }
 

@@ -67,21 +67,15 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
                                           ctx.settings.coverage_masks))
             return;
           const Material& m = scene.materials[cs.attribute_id[local]];
-          if (cs.oriented(local) && m.sides == 1) {
-            Vec3f n = normalize(lerp(h.u, cs.end_normal(local, 0), cs.end_normal(local, 1)));
-            if (m.flip_normals) n = -n;
-            if (dot(n, ray.d) > 0) return;
-          }
+          if (cs.oriented(local) && m.hides_back_of(lerp(h.u, cs.end_normal(local, 0), cs.end_normal(local, 1)), ray.d))
+            return;
           abuffer.add(
               Fragment{h.t, h.coverage, cs.strand_id[local], p, h.u, false, {}, {}, h.mask, -1, h.distance}, shade);
           nearest = std::min(nearest, h.t);
           break;
         }
-        case Scene::PrimKind::Sphere:
-        case Scene::PrimKind::Polygon: {
-          bool is_sphere = kind == Scene::PrimKind::Sphere;
-          uint32_t mi = is_sphere ? scene.sphere_material[local] : scene.polygon_material[local];
-          const Material& m = scene.materials[mi];
+        case Scene::PrimKind::Surface: {
+          const Material& m = scene.materials[scene.surfaces.material(local)];
           if (filter.shadow && m.transmission == Transmission::Transparent) return;
           const float tmin = p == filter.origin_primitive ? filter.origin_min_t : 0.0f;
           if (tmin == std::numeric_limits<float>::infinity()) return;
@@ -90,8 +84,7 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
             ++counters.surface_tests;
             Ray r = r_in;
             r.tmin = std::max(r.tmin, tmin);
-            bool hit = is_sphere ? scene.spheres[local].intersect(r, h) : scene.polygons[local].intersect(r, h);
-            return hit && !(m.sides == 1 && dot(m.flip_normals ? -h.ng : h.ng, r.d) > 0);
+            return scene.surfaces.intersect(local, r, h) && !m.hides_back_of(h.ng, r.d);
           };
           SurfaceFragment sf;
           if (!surface_coverage(ray, footprint, hit_surface, sf)) return;
@@ -225,7 +218,7 @@ Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, 
     Scene::PrimKind kind = scene.prim_kind(f.primitive, local);
     if (kind == Scene::PrimKind::CurveSegment)
       return {Vec3f{}, shadow_opacity(scene.materials[cs.attribute_id[local]], bezier(cs.opacities(local), f.u))};
-    uint32_t material = kind == Scene::PrimKind::Sphere ? scene.sphere_material[local] : scene.polygon_material[local];
+    const uint32_t material = scene.surfaces.material(local);
     return {Vec3f{}, shadow_opacity(scene.materials[material], scene.materials[material].opacity)};
   };
   collect_fragments(ctx, ray, footprint, counters, scratch, opacity, shadow, min_transmittance);

@@ -39,16 +39,16 @@ inline HitFilter shadow_filter(const Interaction& at) {
 }
 
 // The filter of a reflected or refracted ray leaving `at`: its strand is never hit; a planar
-// polygon cannot be hit again; a sphere only beyond `self_distance` (its far side).
+// surface (polygon, triangle) cannot be hit again; a curved one only beyond `self_distance`
+// (a sphere's far side).
 inline HitFilter leaving_filter(const Interaction& at, const Scene& scene, float self_distance) {
   HitFilter f;
   f.skip_strand = at.strand;
   if (!at.is_curve) {
     uint32_t local;
     f.origin_primitive = at.primitive;
-    f.origin_min_t = scene.prim_kind(at.primitive, local) == Scene::PrimKind::Polygon
-                         ? std::numeric_limits<float>::infinity()
-                         : self_distance;
+    scene.prim_kind(at.primitive, local);
+    f.origin_min_t = scene.surfaces.is_flat(local) ? std::numeric_limits<float>::infinity() : self_distance;
   }
   return f;
 }

@@ -23,29 +23,20 @@ bool Tracer::nearest_hit(const Ray& ray_in, Interaction& out, RayCounters& count
           ++counters.segment_tests;
           CurveHit h;
           if (!intersect_segment(cs, local, ray, h)) return;
-          if (cs.oriented(local) && m.sides == 1) {
-            Vec3f n = normalize(lerp(h.u, cs.end_normal(local, 0), cs.end_normal(local, 1)));
-            if (m.flip_normals) n = -n;
-            if (dot(n, ray.d) > 0) return;
-          }
+          if (cs.oriented(local) && m.hides_back_of(lerp(h.u, cs.end_normal(local, 0), cs.end_normal(local, 1)), ray.d))
+            return;
           best = p, best_t = h.t, best_u = h.u;
           ray.tmax = h.t;
           break;
         }
-        case Scene::PrimKind::Sphere:
-        case Scene::PrimKind::Polygon: {
-          bool is_sphere = kind == Scene::PrimKind::Sphere;
-          uint32_t mi = is_sphere ? scene_.sphere_material[local] : scene_.polygon_material[local];
-          const Material& m = scene_.materials[mi];
+        case Scene::PrimKind::Surface: {
+          const Material& m = scene_.materials[scene_.surfaces.material(local)];
           if (filter.shadow && m.transmission == Transmission::Transparent) return;
           ++counters.surface_tests;
           SurfaceHit h;
           Ray r = ray;
           if (p == filter.origin_primitive) r.tmin = std::max(r.tmin, filter.origin_min_t);
-          bool hit = is_sphere ? scene_.spheres[local].intersect(r, h) : scene_.polygons[local].intersect(r, h);
-          if (!hit) return;
-          Vec3f n = m.flip_normals ? -h.ng : h.ng;
-          if (m.sides == 1 && dot(n, ray.d) > 0) return;
+          if (!scene_.surfaces.intersect(local, r, h) || m.hides_back_of(h.ng, ray.d)) return;
           best = p, best_t = h.t, best_u = h.u;
           ray.tmax = h.t;
           break;

@@ -203,8 +203,8 @@ void CallRecorder::curves(const std::string& type, const std::vector<int>& nvert
   keep("Curves", loc, [type, nvertices, wrap, params, loc](RiTarget& t) { t.curves(type, nvertices, wrap, params, loc); });
 }
 
-void CallRecorder::sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params, const SourceLoc& loc) {
-  keep("Sphere", loc, [radius, zmin, zmax, thetamax, params, loc](RiTarget& t) { t.sphere(radius, zmin, zmax, thetamax, params, loc); });
+void CallRecorder::primitive(const PrimitiveRequest& request, const ParamList& params, const SourceLoc& loc) {
+  keep(request.name, loc, [request, params, loc](RiTarget& t) { t.primitive(request, params, loc); });
 }
 
 void CallRecorder::polygon(const ParamList& params, const SourceLoc& loc) {

@@ -85,8 +85,7 @@ class CallRecorder : public RiTarget {
   void object_instance(const std::string& handle, const SourceLoc& loc) override;
   void curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
               const ParamList& params, const SourceLoc& loc) override;
-  void sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
-              const SourceLoc& loc) override;
+  void primitive(const PrimitiveRequest& request, const ParamList& params, const SourceLoc& loc) override;
   void polygon(const ParamList& params, const SourceLoc& loc) override;
   void general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params, const SourceLoc& loc) override;
   void points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,

@@ -103,6 +103,24 @@ std::vector<int> RequestReader::integer_array(const char* what) {
   return values;
 }
 
+std::vector<double> RequestReader::number_array(const char* what) {
+  std::vector<double> values;
+  if (lexer_.peek().kind == TokenKind::Number) {
+    values.push_back(lexer_.next().number);
+    return values;
+  }
+  if (lexer_.peek().kind != TokenKind::ArrayBegin) fail_expected(fmt::format("a number array for {}", what));
+  lexer_.next();
+  while (lexer_.peek().kind != TokenKind::ArrayEnd) {
+    if (lexer_.peek().kind != TokenKind::Number) fail_expected(fmt::format("a number or ']' in {}", what));
+    values.push_back(lexer_.next().number);
+  }
+  lexer_.next();
+  return values;
+}
+
+bool RequestReader::at_array() { return lexer_.peek().kind == TokenKind::ArrayBegin; }
+
 std::vector<std::string> RequestReader::string_array(const char* what) {
   std::vector<std::string> values;
   if (lexer_.peek().kind == TokenKind::String) {

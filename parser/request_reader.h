@@ -43,6 +43,16 @@ class RequestReader {
     read_fixed_numbers(out.data(), N, what);
     return out;
   }
+  // `count` numbers, either bare or in one bracketed array.
+  std::vector<double> fixed_numbers(size_t count, const char* what) {
+    std::vector<double> out(count);
+    read_fixed_numbers(out.data(), count, what);
+    return out;
+  }
+  // A bracketed array of numbers; a bare number is accepted as a one-element array.
+  std::vector<double> number_array(const char* what);
+  // True when the next token opens an array.
+  bool at_array();
   // A bracketed array of integers; a bare number is accepted as a one-element array.
   std::vector<int> integer_array(const char* what);
   // A bracketed array of strings; a bare string is accepted as a one-element array.

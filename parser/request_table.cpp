@@ -1,5 +1,7 @@
 #include "parser/request_table.h"
 
+#include "parser/primitive_signatures.h"
+
 #include <array>
 #include <unordered_map>
 
@@ -267,9 +269,36 @@ void curves(Ctx& c) {
   c.target.curves(type, nvertices, wrap, c.args.param_list(c.name), c.loc);
 }
 
-void sphere(Ctx& c) {
-  const auto s = c.args.numbers<4>("radius, zmin, zmax, thetamax");
-  c.target.sphere(s[0], s[1], s[2], s[3], c.args.param_list(c.name), c.loc);
+// Sphere, the other quadrics, the patches, NuPatch, SubdivisionMesh, Points: read by their
+// signature into one PrimitiveRequest.
+void primitive(Ctx& c) {
+  const PrimitiveSignature* signature = find_primitive_signature(c.name);
+  PrimitiveRequest r;
+  r.name = c.name;
+  const auto args = signature->args;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const PrimitiveArgSpec& a = args[i];
+    if (a.optional && !c.args.at_array()) continue;
+    switch (a.type) {
+      case PrimitiveArgType::Number: {
+        // A run of numbers may be written bare or as one bracketed array (Sphere [1 -1 1 360]).
+        size_t n = 1;
+        while (i + n < args.size() && args[i + n].type == PrimitiveArgType::Number) ++n;
+        std::string what = a.name;
+        for (size_t k = 1; k < n; ++k) what += std::string(k + 1 == n ? " and " : ", ") + args[i + k].name;
+        const std::vector<double> v = c.args.fixed_numbers(n, what.c_str());
+        r.numbers.insert(r.numbers.end(), v.begin(), v.end());
+        i += n - 1;
+        break;
+      }
+      case PrimitiveArgType::Integer: r.numbers.push_back(c.args.integer(a.name)); break;
+      case PrimitiveArgType::String: r.strings.push_back(c.args.string(a.name)); break;
+      case PrimitiveArgType::IntegerArray: r.integer_arrays.push_back(c.args.integer_array(a.name)); break;
+      case PrimitiveArgType::NumberArray: r.number_arrays.push_back(c.args.number_array(a.name)); break;
+      case PrimitiveArgType::StringArray: r.string_arrays.push_back(c.args.string_array(a.name)); break;
+    }
+  }
+  c.target.primitive(r, c.args.param_list(c.name), c.loc);
 }
 
 void polygon(Ctx& c) { c.target.polygon(c.args.param_list(c.name), c.loc); }
@@ -340,7 +369,18 @@ Table make_table() {
       {"ObjectEnd", no_arguments<&RiTarget::object_end>},
       {"ObjectInstance", object_instance},
       {"Curves", curves},
-      {"Sphere", sphere},
+      {"Sphere", primitive},
+      {"Cone", primitive},
+      {"Cylinder", primitive},
+      {"Disk", primitive},
+      {"Hyperboloid", primitive},
+      {"Paraboloid", primitive},
+      {"Torus", primitive},
+      {"Patch", primitive},
+      {"PatchMesh", primitive},
+      {"NuPatch", primitive},
+      {"SubdivisionMesh", primitive},
+      {"Points", primitive},
       {"Polygon", polygon},
       {"GeneralPolygon", general_polygon},
       {"PointsPolygons", points_polygons},

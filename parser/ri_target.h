@@ -31,6 +31,21 @@ struct ProceduralBound {
   double raster_area = 0;  // pixels the bound covers in the image (RunProgram's "detail"); 0: unknown
 };
 
+// A geometry request other than Curves and the four polygon requests (Sphere and the other
+// quadrics, Patch, PatchMesh, NuPatch, SubdivisionMesh, Points): its name and its fixed
+// arguments in the order the request has them, split by type (parser/primitive_signatures.h
+// says which request has which). One RiTarget method carries them all, so that the interface
+// does not grow a method per geometry request (DESIGN.md point 1); what each position means
+// belongs to the target that builds it.
+struct PrimitiveRequest {
+  std::string name;
+  std::vector<double> numbers;  // numeric scalars, integers included (PatchMesh's nu, nv)
+  std::vector<std::string> strings;
+  std::vector<std::vector<int>> integer_arrays;
+  std::vector<std::vector<double>> number_arrays;
+  std::vector<std::vector<std::string>> string_arrays;
+};
+
 class RiTarget {
  public:
   virtual ~RiTarget() = default;
@@ -111,8 +126,7 @@ class RiTarget {
   // Geometry
   virtual void curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
                       const ParamList& params, const SourceLoc& loc) = 0;
-  virtual void sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
-                      const SourceLoc& loc) = 0;
+  virtual void primitive(const PrimitiveRequest& request, const ParamList& params, const SourceLoc& loc) = 0;
   virtual void polygon(const ParamList& params, const SourceLoc& loc) = 0;
   virtual void general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params,
                                const SourceLoc& loc) = 0;
@@ -121,8 +135,8 @@ class RiTarget {
   virtual void points_general_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                                        const std::vector<int>& indices, const ParamList& params,
                                        const SourceLoc& loc) = 0;
-  // A geometric primitive request that darc knows but does not implement (Cylinder,
-  // SubdivisionMesh, Procedural2, ...: known_requests.h): the parser has warned and skips its
+  // A geometric primitive request that darc knows but does not implement (Blobby, Curves of
+  // a kind, ...: known_requests.h): the parser has warned and skips its
   // arguments. It lets a target tell a frame whose every primitive was skipped from an empty one.
   virtual void skipped_primitive(const std::string& request, const SourceLoc& loc) = 0;
 

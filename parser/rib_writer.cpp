@@ -1,5 +1,7 @@
 #include "parser/rib_writer.h"
 
+#include "parser/primitive_signatures.h"
+
 #include <charconv>
 #include <type_traits>
 
@@ -294,10 +296,32 @@ void RibWriter::curves(const std::string& type, const std::vector<int>& nvertice
   write_params(params);
 }
 
-void RibWriter::sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
-                       const SourceLoc&) {
-  begin_line("Sphere") << ' ' << rib_number(radius) << ' ' << rib_number(zmin) << ' ' << rib_number(zmax) << ' '
-                       << rib_number(thetamax);
+void RibWriter::primitive(const PrimitiveRequest& r, const ParamList& params, const SourceLoc&) {
+  std::ostream& out = begin_line(r.name.c_str());
+  size_t number = 0, string = 0, ints = 0, numbers = 0, strings = 0;
+  // The typed lists are written back in the order of the request's signature; optional arrays
+  // that were left out are not in the lists.
+  const PrimitiveSignature* signature = find_primitive_signature(r.name);
+  for (const PrimitiveArgSpec& a : signature ? signature->args : std::span<const PrimitiveArgSpec>{}) {
+    switch (a.type) {
+      case PrimitiveArgType::Number:
+      case PrimitiveArgType::Integer:
+        if (number < r.numbers.size()) out << ' ' << rib_number(r.numbers[number++]);
+        break;
+      case PrimitiveArgType::String:
+        if (string < r.strings.size()) out << ' ' << rib_string(r.strings[string++]);
+        break;
+      case PrimitiveArgType::IntegerArray:
+        if (ints < r.integer_arrays.size()) out << ' ' << bracketed(r.integer_arrays[ints++]);
+        break;
+      case PrimitiveArgType::NumberArray:
+        if (numbers < r.number_arrays.size()) out << ' ' << bracketed(r.number_arrays[numbers++]);
+        break;
+      case PrimitiveArgType::StringArray:
+        if (strings < r.string_arrays.size()) out << ' ' << bracketed(r.string_arrays[strings++]);
+        break;
+    }
+  }
   write_params(params);
 }
 

@@ -75,8 +75,7 @@ class RibWriter : public RiTarget {
 
   void curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
               const ParamList& params, const SourceLoc& loc) override;
-  void sphere(double radius, double zmin, double zmax, double thetamax, const ParamList& params,
-              const SourceLoc& loc) override;
+  void primitive(const PrimitiveRequest& request, const ParamList& params, const SourceLoc& loc) override;
   void polygon(const ParamList& params, const SourceLoc& loc) override;
   void general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params, const SourceLoc& loc) override;
   void points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,

@@ -77,7 +77,7 @@ TEST_F(ArchiveReuse, CameraMoveReusesCurvesAndKeepsOneGeometryKey) {
   ASSERT_EQ(fresh.size(), 3u);
   for (size_t i = 0; i < 3; ++i) {
     EXPECT_TRUE(same_curves(cached[i].curves, fresh[i].curves)) << "frame " << i + 1;
-    EXPECT_EQ(cached[i].spheres.size(), 2u);
+    EXPECT_EQ(cached[i].surfaces.spheres.size(), 2u);
     EXPECT_TRUE(fresh[i].geometry_key.empty()) << "without the cache nothing says the geometry repeats";
   }
   EXPECT_GT(cached[0].curves.size(), 0u);

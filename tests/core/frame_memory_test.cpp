@@ -62,7 +62,7 @@ TEST(FrameMemory, FrameOverTheLimitFailsAtTheRequestThatCrossesItAndRendersNothi
   ASSERT_EQ(b.scenes.size(), 1u) << "the next frame starts with nothing reserved";
   EXPECT_EQ(b.scenes[0].output.frame_number, 2);
   EXPECT_EQ(b.scenes[0].curves.size(), 1000u);
-  EXPECT_TRUE(b.scenes[0].spheres.empty());
+  EXPECT_TRUE(b.scenes[0].surfaces.spheres.empty());
   size_t errors = 0;
   for (const Diagnostic& d : b.diagnostics) {
     if (d.severity != Severity::Error) continue;

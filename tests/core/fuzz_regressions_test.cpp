@@ -21,7 +21,7 @@ TEST(FuzzRegressions, GeneralPolygonWithMoreVerticesThanPointsFailsBeforeAllocat
   Built b = build("WorldBegin\nGeneralPolygon [2000000000] \"P\" [0 0 0 1 0 0 0 1 0]\nWorldEnd\n");
   // The ErrorHandler "print" policy: the request is skipped, its frame renders without it.
   ASSERT_EQ(b.scenes.size(), 1u);
-  EXPECT_TRUE(b.scenes[0].polygons.empty());
+  EXPECT_TRUE(b.scenes[0].surfaces.polygons.empty());
   const Diagnostic error = first_error(b);
   EXPECT_EQ(error.message, "the loops have 2000000000 vertices but only 3 points are given");
   EXPECT_EQ(error.request, "GeneralPolygon");
@@ -42,7 +42,7 @@ TEST(FuzzRegressions, WorldBeginInsideAnObjectIsAnError) {
 TEST(FuzzRegressions, ObjectsBeforeTheWorldBlockStillWork) {
   Built b = build("ObjectBegin \"a\" Sphere 1 -1 1 360 ObjectEnd\nWorldBegin ObjectInstance \"a\" WorldEnd\n");
   ASSERT_EQ(b.scenes.size(), 1u);
-  EXPECT_EQ(b.scenes[0].spheres.size(), 1u);
+  EXPECT_EQ(b.scenes[0].surfaces.spheres.size(), 1u);
 }
 
 }  // namespace

@@ -164,7 +164,7 @@ std::vector<Row> unused_request_rows() {
        warning(2, "Matte", "holdout objects (Matte 1) are not supported: drawn as ordinary objects"), nothing},
       {"motion-times", in_world("MotionBegin [1 0]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd"),
        warning(2, "MotionBegin", "motion blur is not supported: the first motion sample is used"),
-       [](const Scene& s) { EXPECT_EQ(s.spheres.size(), 1u); }},
+       [](const Scene& s) { EXPECT_EQ(s.surfaces.spheres.size(), 1u); }},
       {"unsupported-numbers", before_world("DepthOfField -1 0 0"),
        warning(1, "DepthOfField", "not supported by darc: ignored"), nothing},
   };
@@ -180,14 +180,14 @@ std::vector<Row> transform_rows() {
          EXPECT_DOUBLE_EQ(s.camera.world_to_camera.m[0][0], 1e304) << "the current transform before the overflow";
        }},
       {"transform-values", in_world("Translate 1e38 0 0\nRotate 1e30 0 0 1\nSphere 1 -1 1 360"), std::nullopt,
-       [](const Scene& s) { ASSERT_EQ(s.spheres.size(), 1u); }},
+       [](const Scene& s) { ASSERT_EQ(s.surfaces.spheres.size(), 1u); }},
       {"rotate-axis", in_world("Rotate 30 0 0 0"), error(2, "Rotate", "Rotate axis is the zero vector"),
        [](const Scene&) {}},
       {"transform-singular", in_world("ConcatTransform [0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0]\nSphere 1 -1 1 360"),
        std::nullopt,
        [](const Scene& s) {
-         ASSERT_EQ(s.spheres.size(), 1u);
-         EXPECT_TRUE(s.spheres[0].degenerate) << "flattened to nothing";
+         ASSERT_EQ(s.surfaces.spheres.size(), 1u);
+         EXPECT_TRUE(s.surfaces.spheres[0].degenerate) << "flattened to nothing";
        }},
       {"perspective-fov", in_world("Perspective 0"), error(2, "Perspective", "Perspective fov must be in (0, 180)"),
        [](const Scene&) {}},
@@ -198,7 +198,7 @@ std::vector<Row> transform_rows() {
 }
 
 std::vector<Row> attribute_rows() {
-  const auto material = [](const Scene& s) -> const Material& { return s.materials.at(s.sphere_material.at(0)); };
+  const auto material = [](const Scene& s) -> const Material& { return s.materials.at(s.surfaces.sphere_material.at(0)); };
   return {
       {"sides", in_world("Sides 3\nSphere 1 -1 1 360"), error(2, "Sides", "Sides must be 1 or 2, found 3"),
        [material](const Scene& s) { EXPECT_EQ(material(s).sides, 2); }},
@@ -231,7 +231,7 @@ std::vector<Row> attribute_rows() {
 
 std::vector<Row> shader_rows() {
   const auto surface = [](const Scene& s) -> const ParamList& {
-    return s.materials.at(s.sphere_material.at(0)).surface_params;
+    return s.materials.at(s.surfaces.sphere_material.at(0)).surface_params;
   };
   const auto light = [](const Scene& s) -> const ParamList& { return s.lights.at(0).params; };
   const std::string sphere = "\nSphere 1 -1 1 360";
@@ -334,46 +334,46 @@ std::vector<Row> geometry_rows() {
        [](const Scene& s) { EXPECT_EQ(s.curves.size(), 1u) << "the other curve is kept"; }},
       {"sphere-degenerate", in_world("Sphere 0 -1 1 360\nSphere 1 0.5 0.5 360\nSphere 1 -1 1 0"), std::nullopt,
        [](const Scene& s) {
-         for (const Sphere& sp : s.spheres) EXPECT_TRUE(sp.degenerate);
+         for (const Sphere& sp : s.surfaces.spheres) EXPECT_TRUE(sp.degenerate);
        }},
       {"sphere-flipped", in_world("Sphere -1 1 -1 -360"), std::nullopt,
        [](const Scene& s) {
-         ASSERT_EQ(s.spheres.size(), 1u);
-         EXPECT_EQ(s.spheres[0].radius, 1);
-         EXPECT_TRUE(s.spheres[0].flip_normal) << "three flips";
+         ASSERT_EQ(s.surfaces.spheres.size(), 1u);
+         EXPECT_EQ(s.surfaces.spheres[0].radius, 1);
+         EXPECT_TRUE(s.surfaces.spheres[0].flip_normal) << "three flips";
        }},
       {"sphere-clip-beyond", in_world("Sphere 1 -5 5 720"), std::nullopt,
        [](const Scene& s) {
-         ASSERT_EQ(s.spheres.size(), 1u);
-         EXPECT_EQ(s.spheres[0].zmin, -1);
-         EXPECT_EQ(s.spheres[0].zmax, 1);
-         EXPECT_DOUBLE_EQ(s.spheres[0].thetamax, 2 * std::numbers::pi);
+         ASSERT_EQ(s.surfaces.spheres.size(), 1u);
+         EXPECT_EQ(s.surfaces.spheres[0].zmin, -1);
+         EXPECT_EQ(s.surfaces.spheres[0].zmax, 1);
+         EXPECT_DOUBLE_EQ(s.surfaces.spheres[0].thetamax, 2 * std::numbers::pi);
        }},
       {"sphere-world-range", in_world("Scale 10 10 10\nSphere 1e38 -1 1 360"),
        error(3, "Sphere", "radius 1e+38 lies beyond the float range in world space"),
-       [](const Scene& s) { EXPECT_TRUE(s.spheres.empty()); }},
+       [](const Scene& s) { EXPECT_TRUE(s.surfaces.spheres.empty()); }},
       {"polygon-vertices", in_world("Polygon \"P\" [0 0 0  1 0 0]"),
        error(2, "Polygon", "a polygon needs at least 3 vertices, found 2"),
-       [](const Scene& s) { EXPECT_TRUE(s.polygons.empty()); }},
+       [](const Scene& s) { EXPECT_TRUE(s.surfaces.polygons.empty()); }},
       {"pointspolygons-vertices", in_world("PointsPolygons [3 2] [0 1 2  0 1] \"P\" [0 0 0  1 0 0  0 1 0]"),
        error(2, "PointsPolygons", "loop 1 has 2 vertices (at least 3 required)"),
-       [](const Scene& s) { EXPECT_TRUE(s.polygons.empty()) << "the whole request is skipped"; }},
+       [](const Scene& s) { EXPECT_TRUE(s.surfaces.polygons.empty()) << "the whole request is skipped"; }},
       {"generalpolygon-points", in_world("GeneralPolygon [3] \"P\" [0 0 0  1 0 0  0 1 0  1 1 0]"),
        error(2, "GeneralPolygon", "the loops have 3 vertices but 4 points are given"),
-       [](const Scene& s) { EXPECT_TRUE(s.polygons.empty()); }},
+       [](const Scene& s) { EXPECT_TRUE(s.surfaces.polygons.empty()); }},
       {"pointspolygons-indices", in_world("PointsPolygons [3] [0 1 5] \"P\" [0 0 0  1 0 0  0 1 0]"),
        error(2, "PointsPolygons", "vertex index 5 out of range (3 points)"),
-       [](const Scene& s) { EXPECT_TRUE(s.polygons.empty()); }},
+       [](const Scene& s) { EXPECT_TRUE(s.surfaces.polygons.empty()); }},
       {"pointspolygons-unused-points", in_world("PointsPolygons [3] [0 1 2] \"P\" [0 0 0  1 0 0  0 1 0  5 5 5]"),
-       std::nullopt, [](const Scene& s) { EXPECT_EQ(s.polygons.size(), 1u); }},
+       std::nullopt, [](const Scene& s) { EXPECT_EQ(s.surfaces.polygons.size(), 1u); }},
       {"pointsgeneralpolygons-nloops", in_world("PointsGeneralPolygons [0] [] [] \"P\" [0 0 0  1 0 0  0 1 0]"),
        error(2, "PointsGeneralPolygons", "face 0 has 0 loops (at least 1 required)"),
-       [](const Scene& s) { EXPECT_TRUE(s.polygons.empty()); }},
+       [](const Scene& s) { EXPECT_TRUE(s.surfaces.polygons.empty()); }},
       {"polygon-world-range",
        in_world("Scale 1e10 1e10 1\nPointsPolygons [3 3] [0 1 2  0 2 3] \"P\" [0 0 0  1 0 0  0 1 0  1e30 1 0]"),
        warning(3, "PointsPolygons",
                "1 point lies beyond the float range in world space: the faces that use it are dropped"),
-       [](const Scene& s) { EXPECT_EQ(s.polygons.size(), 1u) << "the face without that point is kept"; }},
+       [](const Scene& s) { EXPECT_EQ(s.surfaces.polygons.size(), 1u) << "the face without that point is kept"; }},
   };
 }
 

@@ -34,8 +34,8 @@ WorldEnd
   ASSERT_EQ(b.scenes.size(), 1u);
   EXPECT_TRUE(errors(b).empty()) << errors(b)[0].str();
   EXPECT_EQ(b.frame_errors[0].count, 0);
-  ASSERT_EQ(b.scenes[0].spheres.size(), 1u);
-  EXPECT_EQ(b.scenes[0].materials[b.scenes[0].sphere_material[0]].emissive_area_light, "arealight")
+  ASSERT_EQ(b.scenes[0].surfaces.spheres.size(), 1u);
+  EXPECT_EQ(b.scenes[0].materials[b.scenes[0].surfaces.sphere_material[0]].emissive_area_light, "arealight")
       << "the fallback stays: the geometry is drawn emissive";
 }
 
@@ -50,7 +50,7 @@ WorldEnd
   ASSERT_EQ(b.scenes.size(), 1u);
   EXPECT_TRUE(errors(b).empty());
   const Scene& s = b.scenes[0];
-  EXPECT_EQ(s.materials[s.sphere_material[0]].lights.size(), 1u)
+  EXPECT_EQ(s.materials[s.surfaces.sphere_material[0]].lights.size(), 1u)
       << "Illuminate 1 0 switched the area light, not the point light it replaced";
 }
 

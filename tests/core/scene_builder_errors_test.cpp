@@ -21,7 +21,7 @@ WorldEnd
 FrameEnd
 )");
   ASSERT_EQ(b.scenes.size(), 1u);
-  EXPECT_EQ(b.scenes[0].spheres.size(), 1u);
+  EXPECT_EQ(b.scenes[0].surfaces.spheres.size(), 1u);
   EXPECT_EQ(b.scenes[0].camera.projection, Camera::Projection::Orthographic)
       << "the Projection with a bad fov changes nothing, not even the projection";
   ASSERT_EQ(b.frame_errors.size(), 1u);
@@ -60,7 +60,7 @@ Sphere 2 -2 2 360
 WorldEnd
 )");
   ASSERT_EQ(b.scenes.size(), 1u);
-  EXPECT_EQ(b.scenes[0].spheres.size(), 3u) << "the object's other requests and the rest are built";
+  EXPECT_EQ(b.scenes[0].surfaces.spheres.size(), 3u) << "the object's other requests and the rest are built";
   EXPECT_EQ(b.frame_errors[0].count, 2);
   EXPECT_EQ(b.frame_errors[0].first,
             "test.rib:3:1: error: ObjectInstance: object \"o\": Sides must be 1 or 2, found 3");
@@ -79,7 +79,7 @@ WorldEnd
   EXPECT_EQ(b.frame_errors[0].count, 3) << "ObjectBegin, TransformBegin and AttributeBegin";
   EXPECT_EQ(b.frame_errors[0].first,
             "test.rib:7:1: error: WorldEnd: ObjectBegin at test.rib:6:1 is still open: closed here");
-  EXPECT_TRUE(b.scenes[0].spheres.empty()) << "the sphere inside the object is recorded, not drawn";
+  EXPECT_TRUE(b.scenes[0].surfaces.spheres.empty()) << "the sphere inside the object is recorded, not drawn";
   EXPECT_TRUE(b.failed.empty());
 }
 

@@ -62,7 +62,7 @@ TEST(SceneBuilderProcedural, AFrameThatIsNotRenderedDeclinesItsProcedurals) {
   fs::remove_all(dir);
   EXPECT_TRUE(b.diagnostics.empty()) << b.diagnostics[0].str();
   ASSERT_EQ(b.scenes.size(), 1u);
-  EXPECT_EQ(b.scenes[0].spheres.size(), 1u);
+  EXPECT_EQ(b.scenes[0].surfaces.spheres.size(), 1u);
 }
 
 TEST(SceneBuilderProcedural, InsideAnObjectTheBoundIsNotJudged) {

@@ -168,7 +168,7 @@ TEST_P(SceneBuilderTransmission, SpellingGivesTheMaterialsTransmission) {
   Built b = build(std::string("WorldBegin\n") + c.attributes + "\nSphere 1 -1 1 360\nWorldEnd\n");
   ASSERT_EQ(b.scenes.size(), 1u) << c.attributes;
   const Scene& s = b.scenes[0];
-  EXPECT_EQ(s.materials[s.sphere_material[0]].transmission, c.expected) << c.attributes;
+  EXPECT_EQ(s.materials[s.surfaces.sphere_material[0]].transmission, c.expected) << c.attributes;
   EXPECT_TRUE(reported(b, Severity::Warning, "no effect").empty()) << c.attributes;
 }
 
@@ -271,9 +271,9 @@ WorldEnd
 )");
   ASSERT_EQ(b.scenes.size(), 1u);
   const Scene& s = b.scenes[0];
-  ASSERT_EQ(s.spheres.size(), 6u);
+  ASSERT_EQ(s.surfaces.spheres.size(), 6u);
   ASSERT_EQ(s.materials.size(), 2u);
-  const std::vector<uint32_t>& m = s.sphere_material;
+  const std::vector<uint32_t>& m = s.surfaces.sphere_material;
   EXPECT_NE(m[0], m[1]) << "differing only in transmission";
   EXPECT_EQ(m[1], m[2]) << "the same state shares one material";
   EXPECT_EQ(m[3], m[0]) << "AttributeEnd restores the transmission";

@@ -69,7 +69,7 @@ FrameBegin 3 WorldBegin Sphere 1 -1 1 360 WorldEnd FrameEnd)");
   EXPECT_TRUE(b.failed.empty());
   EXPECT_EQ(b.scenes[1].output.frame_number, 2);
   EXPECT_EQ(b.scenes[1].curves.size(), 0u);
-  EXPECT_EQ(b.scenes[1].spheres.size(), 1u) << "the requests after the bad one are built";
+  EXPECT_EQ(b.scenes[1].surfaces.spheres.size(), 1u) << "the requests after the bad one are built";
   ASSERT_EQ(b.frame_errors.size(), 3u);
   EXPECT_EQ(b.frame_errors[0].count, 0);
   EXPECT_EQ(b.frame_errors[1].count, 1);
@@ -102,8 +102,8 @@ MotionBegin [0 1] Translate 1 0 0 Translate 5 0 0 MotionEnd
 Sphere 1 -1 1 360
 WorldEnd)");
   ASSERT_EQ(b.scenes.size(), 1u);
-  ASSERT_EQ(b.scenes[0].spheres.size(), 1u);
-  EXPECT_NEAR(b.scenes[0].spheres[0].bounds().center().x, 1.0f, 1e-4f);
+  ASSERT_EQ(b.scenes[0].surfaces.spheres.size(), 1u);
+  EXPECT_NEAR(b.scenes[0].surfaces.spheres[0].bounds().center().x, 1.0f, 1e-4f);
 }
 
 TEST(SceneBuilder, LightsFollowIlluminateAndAttributeScopes) {
@@ -123,7 +123,7 @@ WorldEnd)");
   EXPECT_EQ(s.lights[0].shader, "distantlight") << "a light before WorldBegin becomes a world light";
   auto on = [&](uint32_t sphere) {
     std::set<std::string> names;
-    for (uint32_t l : s.materials[s.sphere_material[sphere]].lights) names.insert(s.lights[l].shader);
+    for (uint32_t l : s.materials[s.surfaces.sphere_material[sphere]].lights) names.insert(s.lights[l].shader);
     return names;
   };
   EXPECT_EQ(on(0), (std::set<std::string>{"pointlight", "ambientlight"}));
@@ -138,16 +138,16 @@ ReverseOrientation Sphere 1 -1 1 360
 WorldEnd)");
   ASSERT_EQ(b.scenes.size(), 1u);
   const Scene& s = b.scenes[0];
-  EXPECT_FALSE(s.materials[s.sphere_material[0]].flip_normals);
-  EXPECT_TRUE(s.materials[s.sphere_material[1]].flip_normals) << "a mirror flips the coordinate system";
-  EXPECT_FALSE(s.materials[s.sphere_material[2]].flip_normals);
+  EXPECT_FALSE(s.materials[s.surfaces.sphere_material[0]].flip_normals);
+  EXPECT_TRUE(s.materials[s.surfaces.sphere_material[1]].flip_normals) << "a mirror flips the coordinate system";
+  EXPECT_FALSE(s.materials[s.surfaces.sphere_material[2]].flip_normals);
 }
 
 TEST(SceneBuilder, UnbalancedBlocksAreErrors) {
   // A block left open at WorldEnd is an error, closed there: the frame is built.
   Built b = build("WorldBegin AttributeBegin Sphere 1 -1 1 360 WorldEnd");
   ASSERT_EQ(b.scenes.size(), 1u);
-  EXPECT_EQ(b.scenes[0].spheres.size(), 1u);
+  EXPECT_EQ(b.scenes[0].surfaces.spheres.size(), 1u);
   ASSERT_EQ(b.frame_errors.size(), 1u);
   EXPECT_EQ(b.frame_errors[0].count, 1);
   EXPECT_EQ(b.frame_errors[0].first,
@@ -189,7 +189,7 @@ TEST(SceneBuilder, OneMaterialPerDistinctAttributeState) {
   EXPECT_EQ(s.curves.attribute_id[0], s.curves.attribute_id[50]);
   EXPECT_NE(s.curves.attribute_id[50], s.curves.attribute_id[51]);
   EXPECT_EQ(s.materials[s.curves.attribute_id[51]].color, (Vec3f{1, 0, 0}));
-  EXPECT_EQ(s.sphere_material[0], s.curves.attribute_id[53]);
+  EXPECT_EQ(s.surfaces.sphere_material[0], s.curves.attribute_id[53]);
 }
 
 }  // namespace

@@ -42,13 +42,13 @@ WorldBegin
 
 TEST(KnownRequests, SkippedPrimitivesAreToldToTheTarget) {
   auto r = parse_rib(
-      "WorldBegin\nCylinder 1 0 1 360\nBxdf \"PxrDiffuse\" \"d\"\nSubdivisionMesh \"catmull-clark\" [4] "
-      "[0 1 2 3] [] [] [] [] \"P\" [0 0 0 1 0 0 1 1 0 0 1 0]\nCylinder 2 0 1 360\nWorldEnd\n");
-  EXPECT_EQ(r->target.skipped_primitives, (std::vector<std::string>{"Cylinder", "SubdivisionMesh", "Cylinder"}))
+      "WorldBegin\nBlobby 1 [1001 0] [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1] [\"\"]\nBxdf \"PxrDiffuse\" \"d\"\n"
+      "Geometry \"teapot\"\nBlobby 1 [1001 0] [2 0 0 0 0 2 0 0 0 0 2 0 0 0 0 1] [\"\"]\nWorldEnd\n");
+  EXPECT_EQ(r->target.skipped_primitives, (std::vector<std::string>{"Blobby", "Geometry", "Blobby"}))
       << "geometry only, and every call (the warning is once per name)";
   const auto warnings = r->warnings();
   ASSERT_EQ(warnings.size(), 3u);
-  EXPECT_EQ(warnings[0].message, "request \"Cylinder\" (RI Spec 3.2) is not supported: skipped");
+  EXPECT_EQ(warnings[0].message, "request \"Blobby\" (RI Spec 3.2) is not supported: skipped");
 }
 
 TEST(KnownRequests, TrimCurveWarnsOnceThatTheSurfaceIsUntrimmed) {

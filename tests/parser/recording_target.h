@@ -159,8 +159,14 @@ class RecordingTarget : public RiTarget {
               const SourceLoc& loc) override {
     add("Curves", {nv.begin(), nv.end()}, {type, wrap}, p, loc);
   }
-  void sphere(double r, double z0, double z1, double t, const ParamList& p, const SourceLoc& loc) override {
-    add("Sphere", {r, z0, z1, t}, {}, p, loc);
+  // Numbers, then every array's values in order; strings, then every string array's.
+  void primitive(const PrimitiveRequest& r, const ParamList& p, const SourceLoc& loc) override {
+    std::vector<double> n = r.numbers;
+    for (const auto& a : r.integer_arrays) n.insert(n.end(), a.begin(), a.end());
+    for (const auto& a : r.number_arrays) n.insert(n.end(), a.begin(), a.end());
+    std::vector<std::string> s = r.strings;
+    for (const auto& a : r.string_arrays) s.insert(s.end(), a.begin(), a.end());
+    add(r.name, n, s, p, loc);
   }
   void polygon(const ParamList& p, const SourceLoc& loc) override { add("Polygon", {}, {}, p, loc); }
   void general_polygon(const std::vector<int>& nv, const ParamList& p, const SourceLoc& loc) override {

@@ -72,14 +72,14 @@ TEST(RibParserErrors, InvalidDeclareIsAnError) {
 }
 
 TEST(RibParserErrors, UnknownRequestWarnsOncePerNameAndSkipsItsArguments) {
-  auto r = parse_rib("Foo 1 2 [3] \"x\"\nFoo 4\nBar\nCylinder 1 0 1 360\nWorldBegin");
+  auto r = parse_rib("Foo 1 2 [3] \"x\"\nFoo 4\nBar\nBlobby 1 [1001 0] [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1] [\"\"]\nWorldBegin");
   EXPECT_TRUE(r->ok);
   const auto warnings = r->warnings();
   ASSERT_EQ(warnings.size(), 3u);
   EXPECT_EQ(warnings[0].message, "unknown request \"Foo\": skipped");
   EXPECT_EQ(warnings[0].loc.line, 1);
   EXPECT_EQ(warnings[1].message, "unknown request \"Bar\": skipped");
-  EXPECT_TRUE(contains(warnings[2].message, "Cylinder"));
+  EXPECT_TRUE(contains(warnings[2].message, "Blobby"));
   ASSERT_EQ(r->target.calls.size(), 1u);
   EXPECT_EQ(r->target.calls[0].request, "WorldBegin");
 }
@@ -130,7 +130,7 @@ TEST(RibParserErrors, UnterminatedStringIsReportedAtItsStart) {
 
 TEST(RibParserErrors, RibErrorFromTheTargetIsReportedAtTheRequest) {
   struct Refusing : RecordingTarget {
-    void sphere(double, double, double, double, const ParamList&, const SourceLoc&) override {
+    void primitive(const PrimitiveRequest&, const ParamList&, const SourceLoc&) override {
       throw RibError("sphere radius must be positive");
     }
   } target;

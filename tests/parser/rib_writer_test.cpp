@@ -101,6 +101,20 @@ TEST(RibWriter, RoundTripOfEveryRequestForm) {
       "AttributeEnd\nObjectBegin 2\nSphere 1 -1 1 360\nObjectEnd\nObjectInstance 2\nWorldEnd\nFrameEnd\n");
 }
 
+// Every request of RiTarget::primitive, with its typed arguments (SubdivisionMesh with and
+// without its optional tag arrays).
+TEST(RibWriter, RoundTripOfThePrimitiveRequests) {
+  const std::string P4 = "\"P\" [0 0 0 1 0 0 0 1 0 1 1 0]";
+  expect_round_trip(
+      "WorldBegin\nCone 2 0.5 270\nCylinder 1 -1 1 360\nDisk 0 1 360\nHyperboloid 1 0 0 0 1 1 360\n"
+      "Paraboloid 1 0 1 360\nTorus 1 0.25 0 360 180\nPatch \"bilinear\" " + P4 +
+      "\nPatchMesh \"bilinear\" 2 \"nonperiodic\" 2 \"nonperiodic\" " + P4 +
+      "\nNuPatch 2 2 [0 0 1 1] 0 1 2 2 [0 0 1 1] 0 1 \"Pw\" [0 0 0 1 1 0 0 1 0 1 0 1 1 1 0 1]\n"
+      "SubdivisionMesh \"catmull-clark\" [4] [0 1 3 2] " + P4 +
+      "\nSubdivisionMesh \"catmull-clark\" [4] [0 1 3 2] [\"crease\" \"interpolateboundary\"] [2 1 0 0] [0 1] "
+      "[2.5] " + P4 + "\nPoints \"P\" [0 0 0 1 1 1] \"constantwidth\" 0.1\nWorldEnd\n");
+}
+
 // The spellings the scene builder reads for ray tracing: typed, untyped and predeclared.
 TEST(RibWriter, RoundTripOfTheRayTracingAttributesAndOptions) {
   expect_round_trip(
