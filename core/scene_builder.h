@@ -20,6 +20,8 @@
 
 namespace darc {
 
+struct PatchMeshDescription;  // core/patch_tessellation.h
+
 struct FrameOverrides {
   int xres = 0, yres = 0;             // --res (0: keep Format)
   double pixel_samples = 0;           // --pixel-samples (0: keep PixelSamples)
@@ -172,6 +174,12 @@ class SceneBuilder : public RiTarget {
   using PrimitiveBuilder = void (SceneBuilder::*)(const PrimitiveRequest&, const ParamList&, const SourceLoc&);
   static PrimitiveBuilder find_primitive_builder(const std::string& request);
   void add_sphere(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  // Patch, PatchMesh and NuPatch, tessellated (scene_builder_patches.cpp).
+  void add_patch(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_patch_mesh(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_patch_surface(PatchMeshDescription& mesh, const ParamList& params, const char* request,
+                         const SourceLoc& loc);
+  void add_nu_patch(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
   // Moves a tessellated surface from the current object space to the world and stores it with
   // `material` (from make_material). Returns how many triangles were kept (degenerate ones and
   // those beyond the float range in world space are dropped); false from reserve_frame_memory

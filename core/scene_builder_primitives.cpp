@@ -22,6 +22,9 @@ bool all_finite(const Vec3f& p) { return std::isfinite(p.x) && std::isfinite(p.y
 SceneBuilder::PrimitiveBuilder SceneBuilder::find_primitive_builder(const std::string& request) {
   static constexpr std::pair<std::string_view, PrimitiveBuilder> kBuilders[] = {
       {"Sphere", &SceneBuilder::add_sphere},
+      {"Patch", &SceneBuilder::add_patch},
+      {"PatchMesh", &SceneBuilder::add_patch_mesh},
+      {"NuPatch", &SceneBuilder::add_nu_patch},
   };
   for (const auto& [name, builder] : kBuilders)
     if (name == request) return builder;
