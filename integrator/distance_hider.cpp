@@ -87,7 +87,7 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
             return scene.surfaces.intersect(local, r, h) && !m.hides_back_of(h.ng, r.d);
           };
           SurfaceFragment sf;
-          if (!surface_coverage(ray, footprint, hit_surface, sf)) return;
+          if (!surface_coverage(ray, footprint, hit_surface, sf, scene.surfaces.is_piece(local))) return;
           Fragment f{sf.t, sf.coverage, kNoStrand, p, 0, false, {}, {}, sf.mask, sf.point};
           if (!ctx.settings.coverage_masks) f.mask = kFullMask;
           abuffer.add(f, shade);

@@ -55,7 +55,10 @@ Ray footprint_sub_ray(const Ray& ray, const RayFootprint& footprint, int point);
 // covers the mask points whose sub-rays hit it. The ray itself and the four corner points are
 // tried first; when all five hit, the surface covers the footprint (exact for convex shapes; a
 // hole smaller than the footprint between the five points is missed), when none does, it is
-// taken to miss it (a surface smaller than the footprint between them is missed).
+// taken to miss it (a surface smaller than the footprint between them is missed) unless it is a
+// piece of a tessellated surface (`piece`): pieces are often smaller than the footprint, and a
+// mesh of them must cover every point a sub-ray of it hits, so they are always tried at every
+// point when the five do not all hit.
 struct SurfaceFragment {
   float t = 0;
   float coverage = 0;
@@ -64,7 +67,8 @@ struct SurfaceFragment {
 };
 
 template <class HitSurface>
-bool surface_coverage(const Ray& ray, const RayFootprint& footprint, HitSurface&& hit_surface, SurfaceFragment& out) {
+bool surface_coverage(const Ray& ray, const RayFootprint& footprint, HitSurface&& hit_surface, SurfaceFragment& out,
+                      bool piece = false) {
   SurfaceHit h;
   bool centre = hit_surface(ray, h);
   float centre_t = h.t;
@@ -81,7 +85,7 @@ bool surface_coverage(const Ray& ray, const RayFootprint& footprint, HitSurface&
     out = {centre_t, 1.0f, kFullMask, -1};
     return true;
   }
-  if (!centre && corner_hits == 0) return false;
+  if (!centre && corner_hits == 0 && !piece) return false;
   CoverageMask mask = 0;
   float nearest_t = std::numeric_limits<float>::infinity();
   int nearest_point = -1;
