@@ -1,7 +1,8 @@
 // Patches and NURBS render as the exact surfaces they stand for, in both hiders: a bilinear patch
 // ground as the Polygon with the same corners, a NURBS sphere as the Sphere primitive, and a
 // rational bicubic quarter disk as a 1000-sided polygon of the exact arc (its sides are 3e-7 of
-// the radius off the circle); and the same image on 1 and 2 threads.
+// the radius off the circle), all to the same tolerances in both hiders; and the same image on 1
+// and 2 threads.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -81,8 +82,8 @@ TEST(PatchSurface, BilinearPatchGroundRendersAsItsPolygon) {
     ASSERT_GT(covered(a), 0.3 * 64 * 48) << "the ground fills much of the frame";
     const Difference d = compare(a, b);
     EXPECT_LT(d.rmse, 2e-3);  // one plane: only the diagonal may differ
-    // The distance hider's coverage of the diagonal's two sides sums to slightly under 1 (0.034 at
-    // worst here); the stochastic hider's exact hits differ only by rounding.
+    // The distance hider's coverage of the diagonal's two sides sums to slightly under 1 at one
+    // pixel (0.034 here); the stochastic hider's exact hits differ only by rounding.
     EXPECT_LT(d.max, hider == HiderKind::Distance ? 5e-2 : 2e-2);
   }
 }
@@ -111,23 +112,13 @@ TEST(PatchSurface, NurbsSphereHasTheSpheresSilhouetteAndShading) {
     const Image a = render(exact, hider), b = render(nurbs, hider);
     ASSERT_GT(covered(a), 200) << "the sphere is in view";
     const Difference alpha = compare(a, b, a.channel_index("A")), all = compare(a, b);
-    if (hider == HiderKind::Stochastic) {
-      // Silhouette: the triangles are within 6e-4 of the radius (about 0.01 pixel here), so a
-      // sample in that band is rare, and one sample weighs about 1/9 of a pixel.
-      EXPECT_LT(alpha.rmse, 5e-3);
-      EXPECT_LT(alpha.max, 0.15);
-      EXPECT_NEAR(covered(b), covered(a), 2e-3 * covered(a));
-      // Shading: interpolated normals within 4 degrees of each other, so within 2 of the exact one.
-      EXPECT_LT(all.rmse, 1e-2);
-    } else {
-      // The distance hider's footprint coverage of a mesh whose triangles are smaller than a pixel
-      // falls short where many meet (measured: 2% of the sphere's coverage, alpha RMSE 0.021):
-      // a limit of its triangle coverage, not of the tessellation (the stochastic hider above
-      // sees the same triangles). These bounds keep it from growing.
-      EXPECT_LT(alpha.rmse, 3e-2);
-      EXPECT_NEAR(covered(b), covered(a), 3e-2 * covered(a));
-      EXPECT_LT(all.rmse, 3e-2);
-    }
+    // Silhouette: the triangles are within 6e-4 of the radius (about 0.01 pixel here), so a sample
+    // in that band is rare, and one sample weighs about 1/9 of a pixel.
+    EXPECT_LT(alpha.rmse, 5e-3);
+    EXPECT_LT(alpha.max, 0.15);
+    EXPECT_NEAR(covered(b), covered(a), 2e-3 * covered(a));
+    // Shading: interpolated normals within 4 degrees of each other, so within 2 of the exact one.
+    EXPECT_LT(all.rmse, 1e-2);
   }
 }
 
@@ -167,15 +158,9 @@ Surface "constant"
     // A quarter of pi r^2 over the 2 x 2 screen window's 64 x 64 pixels.
     EXPECT_NEAR(covered(a), M_PI * kRadius * kRadius / 4 / 4 * 64 * 64, 2);
     const Difference alpha = compare(a, b, a.channel_index("A"));
-    if (hider == HiderKind::Stochastic) {
-      EXPECT_LT(alpha.rmse, 3e-3);
-      EXPECT_LT(alpha.max, 0.15);  // a sample at most (about 1/9 of a pixel) on the other side
-      EXPECT_NEAR(covered(b), covered(a), 2);
-    } else {
-      // The distance hider loses coverage inside the mesh (measured: alpha RMSE 0.048, 0.71 at
-      // the centre, where the collapsed edge's thin triangles all meet): see the sphere test.
-      EXPECT_LT(alpha.rmse, 8e-2);
-    }
+    EXPECT_LT(alpha.rmse, 3e-3);
+    EXPECT_LT(alpha.max, 0.15);  // a sample at most (about 1/9 of a pixel) on the other side
+    EXPECT_NEAR(covered(b), covered(a), 2);
   }
 }
 
