@@ -1,7 +1,8 @@
 // Patches and NURBS render as the exact surfaces they stand for, in both hiders: a bilinear patch
 // ground as the Polygon with the same corners, a NURBS sphere as the Sphere primitive, and a
 // rational bicubic quarter disk as a 1000-sided polygon of the exact arc (its sides are 3e-7 of
-// the radius off the circle), all to the same tolerances in both hiders; and the same image on 1
+// the radius off the circle), to the same tolerances in both hiders but for one pixel of the
+// ground's diagonal; and the same image on 1
 // and 2 threads.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
