@@ -2,8 +2,7 @@
 // ground as the Polygon with the same corners, a NURBS sphere as the Sphere primitive, and a
 // rational bicubic quarter disk as a 1000-sided polygon of the exact arc (its sides are 3e-7 of
 // the radius off the circle), to the same tolerances in both hiders but for one pixel of the
-// ground's diagonal; and the same image on 1
-// and 2 threads.
+// ground's diagonal; and the same image on 1 and 2 threads.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
