@@ -22,6 +22,8 @@
 
 namespace darc {
 
+struct PatchMeshDescription;  // core/patch_tessellation.h
+
 struct FrameOverrides {
   int xres = 0, yres = 0;             // --res (0: keep Format)
   double pixel_samples = 0;           // --pixel-samples (0: keep PixelSamples)
@@ -195,6 +197,12 @@ class SceneBuilder : public RiTarget {
   void add_quadric(Quadric quadric, const PrimitiveRequest& r, const SourceLoc& loc);
   // SubdivisionMesh, tessellated to its limit surface (scene_builder_subdivision.cpp).
   void add_subdivision_mesh(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  // Patch, PatchMesh and NuPatch, tessellated (scene_builder_patches.cpp).
+  void add_patch(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_patch_mesh(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_patch_surface(PatchMeshDescription& mesh, const ParamList& params, const char* request,
+                         const SourceLoc& loc);
+  void add_nu_patch(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
   // Moves a tessellated surface from the current object space to the world and stores it with
   // `material` (from make_material). Returns how many triangles were kept (degenerate ones and
   // those beyond the float range in world space are dropped); false from reserve_frame_memory

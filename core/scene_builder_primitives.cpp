@@ -29,6 +29,9 @@ SceneBuilder::PrimitiveBuilder SceneBuilder::find_primitive_builder(const std::s
       {"Hyperboloid", &SceneBuilder::add_hyperboloid},
       {"Torus", &SceneBuilder::add_torus},
       {"SubdivisionMesh", &SceneBuilder::add_subdivision_mesh},
+      {"Patch", &SceneBuilder::add_patch},
+      {"PatchMesh", &SceneBuilder::add_patch_mesh},
+      {"NuPatch", &SceneBuilder::add_nu_patch},
   };
   for (const auto& [name, builder] : kBuilders)
     if (name == request) return builder;

@@ -188,7 +188,11 @@ void RibParser::dispatch(const std::string& request, RequestReader& args, const 
 }
 
 void RibParser::dispatch_unimplemented(const std::string& request, RequestReader& args, const SourceLoc& loc) {
-  if (const std::optional<KnownRequest> known = find_known_request(request)) {
+  if (request == "TrimCurve") {
+    // An attribute of the NuPatches that follow (RI Spec 5.4): they are still drawn, whole.
+    diag_.warning_once("unsupported request TrimCurve", loc, request,
+                       "trim curves are not supported: the untrimmed surface is rendered");
+  } else if (const std::optional<KnownRequest> known = find_known_request(request)) {
     diag_.warning_once("unsupported request " + request, loc, request,
                        fmt::format("request \"{}\" ({}) is not supported: skipped", request, describe(known->origin)));
     if (known->kind == RequestKind::Geometry) target_.skipped_primitive(request, loc);

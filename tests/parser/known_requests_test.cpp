@@ -51,6 +51,20 @@ TEST(KnownRequests, SkippedPrimitivesAreToldToTheTarget) {
   EXPECT_EQ(warnings[0].message, "request \"Blobby\" (RI Spec 3.2) is not supported: skipped");
 }
 
+TEST(KnownRequests, TrimCurveWarnsOnceThatTheSurfaceIsUntrimmed) {
+  auto r = parse_rib(
+      "WorldBegin\nTrimCurve [1] [2] [0 0 1 1] [0] [1] [2] [0 1] [0 1] [1 1]\n"
+      "TrimCurve [1] [2] [0 0 1 1] [0] [1] [2] [0 1] [0 1] [1 1]\nWorldEnd\n");
+  EXPECT_TRUE(r->ok);
+  const auto warnings = r->warnings();
+  ASSERT_EQ(warnings.size(), 1u) << "once per run";
+  EXPECT_EQ(warnings[0].message, "trim curves are not supported: the untrimmed surface is rendered");
+  EXPECT_EQ(warnings[0].loc.str(), "test.rib:2:1");
+  EXPECT_TRUE(r->target.skipped_primitives.empty()) << "an attribute, not a primitive";
+  ASSERT_EQ(r->target.calls.size(), 2u) << "its arguments are skipped";
+  EXPECT_EQ(r->target.calls[1].request, "WorldEnd");
+}
+
 TEST(KnownRequests, NoKnownNameIsReportedUnknown) {
   for (const KnownRequest& known : known_requests()) {
     SCOPED_TRACE(std::string(known.name));

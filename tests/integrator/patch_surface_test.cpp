@@ -1,0 +1,183 @@
+// Patches and NURBS render as the exact surfaces they stand for, in both hiders: a bilinear patch
+// ground as the Polygon with the same corners, a NURBS sphere as the Sphere primitive, and a
+// rational bicubic quarter disk as a 1000-sided polygon of the exact arc (its sides are 3e-7 of
+// the radius off the circle), to the same tolerances in both hiders but for one pixel of the
+// ground's diagonal; and the same image on 1 and 2 threads.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "integrator/built_scene.h"
+#include "integrator/render_frame.h"
+
+namespace darc {
+namespace {
+
+using test::build_scene;
+
+constexpr const char* kHeader = R"RIB(Format 64 48 1
+PixelSamples 3 3
+Projection "perspective" "fov" 40
+Translate 0 -0.3 6
+Rotate -25 1 0 0
+WorldBegin
+LightSource "distantlight" 1 "from" [1 3 -2] "to" [0 0 0]
+LightSource "ambientlight" 2 "intensity" 0.15
+Surface "matte"
+)RIB";
+
+Image render(const std::string& rib, HiderKind hider, int threads = 1) {
+  const Scene scene = build_scene(rib);
+  Diagnostics diag([](const Diagnostic&) {});
+  RenderOptions options;
+  options.hider = hider;
+  options.threads = threads;
+  FrameStats stats;
+  return render_frame(scene, options, diag, stats);
+}
+
+struct Difference {
+  double rmse = 0, max = 0;
+};
+
+// Over one channel, or over all of them (channel -1).
+Difference compare(const Image& a, const Image& b, int channel = -1) {
+  Difference d;
+  EXPECT_EQ(a.pixels.size(), b.pixels.size());
+  size_t n = 0;
+  for (size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
+    if (channel >= 0 && int(i % size_t(a.channels())) != channel) continue;
+    const double e = std::abs(double(a.pixels[i]) - double(b.pixels[i]));
+    d.rmse += e * e;
+    d.max = std::max(d.max, e);
+    ++n;
+  }
+  d.rmse = std::sqrt(d.rmse / double(std::max<size_t>(1, n)));
+  return d;
+}
+
+double covered(const Image& image) {
+  const int alpha = image.channel_index("A");
+  double sum = 0;
+  for (size_t i = size_t(alpha); i < image.pixels.size(); i += size_t(image.channels())) sum += image.pixels[i];
+  return sum;
+}
+
+const char* name(HiderKind hider) { return hider == HiderKind::Distance ? "distance" : "stochastic"; }
+
+TEST(PatchSurface, BilinearPatchGroundRendersAsItsPolygon) {
+  // The patch's corners in RI patch order (0,0), (1,0), (0,1), (1,1) are the polygon's 0, 1, 3, 2.
+  const std::string sphere =
+      "AttributeBegin Color 0.8 0.5 0.3 Translate 0 0.7 0 Sphere 0.7 -0.7 0.7 360 AttributeEnd\n";
+  const std::string polygon =
+      std::string(kHeader) + sphere + "Polygon \"P\" [-2 0 -2  2 0 -2  2 0 2  -2 0 2]\nWorldEnd\n";
+  const std::string patch =
+      std::string(kHeader) + sphere + "Patch \"bilinear\" \"P\" [-2 0 -2  2 0 -2  -2 0 2  2 0 2]\nWorldEnd\n";
+  for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
+    SCOPED_TRACE(name(hider));
+    const Image a = render(polygon, hider), b = render(patch, hider);
+    ASSERT_GT(covered(a), 0.3 * 64 * 48) << "the ground fills much of the frame";
+    const Difference d = compare(a, b);
+    EXPECT_LT(d.rmse, 2e-3);  // one plane: only the diagonal may differ
+    // The distance hider's coverage of the diagonal's two sides sums to slightly under 1 at one
+    // pixel (0.034 here); the stochastic hider's exact hits differ only by rounding.
+    EXPECT_LT(d.max, hider == HiderKind::Distance ? 5e-2 : 2e-2);
+  }
+}
+
+// The unit sphere as a NuPatch of rational quadratic arcs (9 x 5 points, "Pw").
+std::string nurbs_sphere() {
+  const double h = std::sqrt(0.5);
+  const double ax[] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, ay[] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+  const double aw[] = {1, h, 1, h, 1, h, 1, h, 1};
+  const double px[] = {0, 1, 1, 1, 0}, pz[] = {-1, -1, 0, 1, 1}, pw[] = {1, h, 1, h, 1};
+  std::string points;
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 9; ++i) {
+      const double w = aw[i] * pw[j];
+      points += fmt::format(" {} {} {} {}", ax[i] * px[j] * w, ay[i] * px[j] * w, pz[j] * w, w);
+    }
+  return "NuPatch 9 3 [0 0 0 1 1 2 2 3 3 4 4 4] 0 4 5 3 [0 0 0 1 1 2 2 2] 0 2 \"Pw\" [" + points + "]\n";
+}
+
+TEST(PatchSurface, NurbsSphereHasTheSpheresSilhouetteAndShading) {
+  const std::string place = "Color 0.3 0.6 0.8 Translate 0 0.5 0 Scale 1.5 1.5 1.5\n";
+  const std::string exact = std::string(kHeader) + place + "Sphere 1 -1 1 360\nWorldEnd\n";
+  const std::string nurbs = std::string(kHeader) + place + nurbs_sphere() + "WorldEnd\n";
+  for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
+    SCOPED_TRACE(name(hider));
+    const Image a = render(exact, hider), b = render(nurbs, hider);
+    ASSERT_GT(covered(a), 200) << "the sphere is in view";
+    const Difference alpha = compare(a, b, a.channel_index("A")), all = compare(a, b);
+    // Silhouette: the triangles are within 6e-4 of the radius (about 0.01 pixel here), so a sample
+    // in that band is rare, and one sample weighs about 1/9 of a pixel.
+    EXPECT_LT(alpha.rmse, 5e-3);
+    EXPECT_LT(alpha.max, 0.15);
+    EXPECT_NEAR(covered(b), covered(a), 2e-3 * covered(a));
+    // Shading: interpolated normals within 4 degrees of each other, so within 2 of the exact one.
+    EXPECT_LT(all.rmse, 1e-2);
+  }
+}
+
+TEST(PatchSurface, RationalBicubicQuarterDiskHasTheArcsSilhouette) {
+  // A quarter disk of radius 1.8 about (-0.9, -0.9): the rational quadratic arc raised to a cubic
+  // in u, scaled from the centre in v (its v = 0 edge collapses to the centre).
+  constexpr double kRadius = 1.8, kCentre = -0.9;
+  const double w = std::sqrt(0.5);
+  const double hx[] = {1, 1.0 / 3 + 2 * w / 3, 2 * w / 3, 0}, hy[] = {0, 2 * w / 3, 1.0 / 3 + 2 * w / 3, 1};
+  const double hw[] = {1, 1.0 / 3 + 2 * w / 3, 1.0 / 3 + 2 * w / 3, 1};
+  std::string patch = "Patch \"bicubic\" \"Pw\" [";
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const double s = kRadius * j / 3;  // homogeneous: (centre w + s x_h, ...)
+      patch += fmt::format(" {} {} 0 {}", kCentre * hw[i] + s * hx[i], kCentre * hw[i] + s * hy[i], hw[i]);
+    }
+  patch += "]\n";
+  std::string polygon = fmt::format("Polygon \"P\" [{} {} 0", kCentre, kCentre);
+  constexpr int kSides = 1000;
+  for (int k = 0; k <= kSides; ++k) {
+    const double a = M_PI / 2 * k / kSides;
+    polygon += fmt::format(" {} {} 0", kCentre + kRadius * std::cos(a), kCentre + kRadius * std::sin(a));
+  }
+  polygon += "]\n";
+  const std::string header = R"RIB(Format 64 64 1
+PixelSamples 3 3
+Projection "orthographic"
+ScreenWindow -1 1 -1 1
+Translate 0 0 5
+WorldBegin
+LightSource "ambientlight" 1 "intensity" 1
+Surface "constant"
+)RIB";
+  for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
+    SCOPED_TRACE(name(hider));
+    const Image a = render(header + polygon + "WorldEnd\n", hider), b = render(header + patch + "WorldEnd\n", hider);
+    // A quarter of pi r^2 over the 2 x 2 screen window's 64 x 64 pixels.
+    EXPECT_NEAR(covered(a), M_PI * kRadius * kRadius / 4 / 4 * 64 * 64, 2);
+    const Difference alpha = compare(a, b, a.channel_index("A"));
+    EXPECT_LT(alpha.rmse, 3e-3);
+    EXPECT_LT(alpha.max, 0.15);  // a sample at most (about 1/9 of a pixel) on the other side
+    EXPECT_NEAR(covered(b), covered(a), 2);
+  }
+}
+
+TEST(PatchSurface, SameImageOnOneAndTwoThreads) {
+  const std::string rib =
+      std::string(kHeader) + "Basis \"b-spline\" 1 \"b-spline\" 1\n" +
+      "PatchMesh \"bicubic\" 5 \"nonperiodic\" 4 \"nonperiodic\" \"P\" [" +
+      "-2 0 -2 -1 0.3 -2 0 0 -2 1 0.4 -2 2 0 -2  -2 0.2 -0.7 -1 0 -0.7 0 0.5 -0.7 1 0 -0.7 2 0.1 -0.7 "
+      "-2 0 0.7 -1 0.4 0.7 0 0 0.7 1 0.3 0.7 2 0 0.7  -2 0.3 2 -1 0 2 0 0.2 2 1 0 2 2 0.4 2]\n" +
+      "Translate 0 0.8 0 Scale 0.6 0.6 0.6\n" + nurbs_sphere() + "WorldEnd\n";
+  for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
+    SCOPED_TRACE(name(hider));
+    const Image one = render(rib, hider, 1), two = render(rib, hider, 2);
+    ASSERT_GT(covered(one), 100);
+    EXPECT_EQ(one.pixels, two.pixels);
+  }
+}
+
+}  // namespace
+}  // namespace darc
