@@ -22,6 +22,7 @@ bool all_finite(const Vec3f& p) { return std::isfinite(p.x) && std::isfinite(p.y
 SceneBuilder::PrimitiveBuilder SceneBuilder::find_primitive_builder(const std::string& request) {
   static constexpr std::pair<std::string_view, PrimitiveBuilder> kBuilders[] = {
       {"Sphere", &SceneBuilder::add_sphere},
+      {"Points", &SceneBuilder::add_points},
   };
   for (const auto& [name, builder] : kBuilders)
     if (name == request) return builder;
