@@ -172,7 +172,8 @@ class SceneBuilder : public RiTarget {
   using PrimitiveBuilder = void (SceneBuilder::*)(const PrimitiveRequest&, const ParamList&, const SourceLoc&);
   static PrimitiveBuilder find_primitive_builder(const std::string& request);
   void add_sphere(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
-  void add_points(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);  // scene_builder_points.cpp
+  // scene_builder_points.cpp
+  void add_points(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
   // Moves a tessellated surface from the current object space to the world and stores it with
   // `material` (from make_material). Returns how many triangles were kept (degenerate ones and
   // those beyond the float range in world space are dropped); false from reserve_frame_memory
