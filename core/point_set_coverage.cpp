@@ -21,6 +21,47 @@ float lens_area(float d, float a, float b) {
   return a * a * std::acos(ca) + b * b * std::acos(cb) - kite;
 }
 
+// The area of the part of the disc of radius r centred at the origin with X <= x and Y <= y:
+// the integral over X up to x of the disc's chord below y, by the antiderivative of the half
+// chord sqrt(r^2 - X^2). In double: a rectangle's area is a difference of four of them.
+double quadrant_area(double x, double y, double r) {
+  if (x <= -r || y <= -r) return 0.0;
+  x = std::min(x, r);
+  y = std::min(y, r);
+  const double r2 = r * r;
+  auto half_chord_integral = [&](double X) {  // the integral of sqrt(r^2 - X^2) from 0 to X
+    X = std::clamp(X, -r, r);
+    return 0.5 * (X * std::sqrt(std::max(0.0, r2 - X * X)) + r2 * std::asin(X / r));
+  };
+  // Over |X| < w the line Y = y cuts the chord (the part below y is y + sqrt(r^2 - X^2) long);
+  // beyond, the chord is all below y (y >= 0) or all above it (y < 0).
+  const double w = std::sqrt(std::max(0.0, r2 - y * y));
+  auto over = [&](double lo, double hi, auto&& antiderivative) {
+    hi = std::min(hi, x);
+    return hi > lo ? antiderivative(hi) - antiderivative(lo) : 0.0;
+  };
+  double area = over(-w, w, [&](double X) { return y * X + half_chord_integral(X); });
+  if (y >= 0) {
+    auto full_chord = [&](double X) { return 2.0 * half_chord_integral(X); };
+    area += over(-r, -w, full_chord) + over(w, r, full_chord);
+  }
+  return area;
+}
+
+// The fraction of the rectangle [x0, x1] x [y0, y1] (relative to the disc's centre) the disc of
+// radius r covers.
+float rectangle_coverage(double x0, double x1, double y0, double y1, double r) {
+  const double rect = (x1 - x0) * (y1 - y0);
+  if (!(rect > 0.0)) return 0.0f;
+  const double area =
+      quadrant_area(x1, y1, r) - quadrant_area(x0, y1, r) - quadrant_area(x1, y0, r) + quadrant_area(x0, y0, r);
+  return float(std::clamp(area / rect, 0.0, 1.0));
+}
+
+// Footprint axes closer to perpendicular than this (the cosine between them) are a rectangle:
+// camera footprints are, to float rounding; sheared ones take the square of the disc's area.
+constexpr float kRectangleCos = 1e-3f;
+
 }  // namespace
 
 float point_coverage(CoverageModel model, float x, float y, float r, float ax_x, float ax_y, float ay_x, float ay_y) {
@@ -35,6 +76,11 @@ float point_coverage(CoverageModel model, float x, float y, float r, float ax_x,
       // extents along it (its own side, and the other side's shadow on it when they are skewed).
       const float ux_x = ax_x / lx, ux_y = ax_y / lx, uy_x = ay_x / ly, uy_y = ay_y / ly;
       const float along_x = x * ux_x + y * ux_y, along_y = x * uy_x + y * uy_y;
+      if (std::abs(ux_x * uy_x + ux_y * uy_y) < kRectangleCos) {
+        // The exact area of the disc in the rectangle, in coordinates centred on the disc.
+        const double hx = 0.5 * double(lx), hy = 0.5 * double(ly);
+        return rectangle_coverage(-hx - along_x, hx - along_x, -hy - along_y, hy - along_y, double(r));
+      }
       coverage = coverage_square(std::abs(along_x), half_side, lx, std::abs(ay_x * ux_x + ay_y * ux_y)) *
                  coverage_square(std::abs(along_y), half_side, ly, std::abs(ax_x * uy_x + ax_y * uy_y));
       break;

@@ -21,10 +21,11 @@ struct PointFragmentHit {
 
 // The coverage of a footprint by a disc of radius r whose centre is at (x, y) in the plane
 // perpendicular to the ray, the footprint's axes projected there being (ax_x, ax_y) and
-// (ay_x, ay_y). Square and Box: the square of the disc's area aligned with the footprint's axes
-// (the product of two bands, as curves treat a strand seen end-on): exact for a disc inside a
-// square footprint, and the coverages of footprints that tile the plane sum to the disc's area.
-// Disc: the exact lens of the disc and the footprint's disc of equal area.
+// (ay_x, ay_y). Square: the exact area of the disc in the footprint when its axes are
+// perpendicular (camera footprints); for sheared ones, and for Box, the square of the disc's
+// area aligned with the footprint's axes (the product of two bands, as curves treat a strand
+// seen end-on). Either way the coverages of footprints that tile the plane sum to the disc's
+// area. Disc: the exact lens of the disc and the footprint's disc of equal area.
 float point_coverage(CoverageModel model, float x, float y, float r, float ax_x, float ax_y, float ay_x, float ay_y);
 
 // The fragment of point i for `ray` (prepared by make_distance_ray): false when the centre's

@@ -99,6 +99,20 @@ TEST(PointCoverage, ADiscInsideTheFootprintCoversItsArea) {
   EXPECT_FLOAT_EQ(point_coverage(CoverageModel::Square, 3, 0, 0.5f, 1, 0, 0, 1), 0.0f) << "beside it";
 }
 
+TEST(PointCoverage, SquareFootprintsCoverTheExactAreaOfLargeDiscs) {
+  // A footprint 4 x 4: a unit disc centred on its corner covers a quarter disc, on the middle of
+  // a side half a disc; a footprint 2 x 2 with the disc's centre 1.5 off cuts a circular segment
+  // of height 0.5 (area acos(0.5) - 0.5 sqrt(0.75)).
+  EXPECT_NEAR(point_coverage(CoverageModel::Square, 2, 2, 1, 4, 0, 0, 4), kPi / 4 / 16, 1e-6f);
+  EXPECT_NEAR(point_coverage(CoverageModel::Square, 2, 0, 1, 4, 0, 0, 4), kPi / 2 / 16, 1e-6f);
+  EXPECT_NEAR(point_coverage(CoverageModel::Square, 0, -1.5f, 1, 2, 0, 0, 2),
+              (std::acos(0.5f) - 0.5f * std::sqrt(0.75f)) / 4, 1e-6f);
+  // The same rotated by 30 degrees with the footprint: only the relative placement counts.
+  const float c = std::cos(0.5236f), s = std::sin(0.5236f);
+  EXPECT_NEAR(point_coverage(CoverageModel::Square, 2 * c - 2 * s, 2 * s + 2 * c, 1, 4 * c, 4 * s, -4 * s, 4 * c),
+              kPi / 4 / 16, 1e-5f);
+}
+
 TEST(PointCoverage, DiscFootprintIsTheExactLens) {
   // Two unit discs whose centres are 1 apart overlap in 2 pi / 3 - sqrt(3) / 2; the footprint
   // disc of radius 1 has the area of a square of side sqrt(pi).
