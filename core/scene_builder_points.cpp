@@ -46,21 +46,28 @@ void check_finite(const std::vector<float>& values, const char* name) {
     if (!std::isfinite(values[i])) throw RibError(fmt::format("\"{}\" value {} is not finite", name, i));
 }
 
-// Values outside a range, clamped into it: how many, and the first (for the warning).
+// Values outside a range, clamped into it: how many, and the first (for the warning, worded as
+// Curves words it).
 struct Clamps {
   size_t count = 0;
-  size_t first_point = 0;
+  size_t first_value_index = 0;
+  int first_component = 0;
   float first_value = 0;
 
-  float apply(float v, float lo, float hi, size_t point) {
+  float apply(float v, float lo, float hi, size_t value_index, int component = 0) {
     if (v >= lo && v <= hi) return v;
-    if (count++ == 0) first_point = point, first_value = v;
-    return std::isnan(v) ? lo : std::clamp(v, lo, hi);  // NaN: nothing there / transparent
+    if (count++ == 0) first_value_index = value_index, first_component = component, first_value = v;
+    return std::isnan(v) ? lo : std::clamp(v, lo, hi);  // NaN (only through the API): nothing there
   }
-  std::string message(const char* name, const char* problem, float lo, float hi) const {
+  // E.g. "\"Os\" (varying) value 0 component 2 is 1.5, outside [0, 1]: clamped to 1 (2 numbers clamped)".
+  std::string message(const PointPrimvar& pv, const char* name, const char* problem, float lo, float hi) const {
     const float used = std::isnan(first_value) ? lo : std::clamp(first_value, lo, hi);
-    return fmt::format("\"{}\" of point {} is {}, {}: clamped to {} ({} number{} clamped)", name, first_point,
-                       first_value, problem, used, count, count == 1 ? "" : "s");
+    const std::string which = pv.components == 1
+                                  ? fmt::format("value {}", first_value_index)
+                                  : fmt::format("value {} component {}", first_value_index, first_component);
+    return fmt::format("\"{}\" ({}) {} is {}, {}: clamped to {} ({} number{} clamped)", name,
+                       to_string(pv.param->decl.storage), which, first_value, problem, used, count,
+                       count == 1 ? "" : "s");
   }
 };
 
@@ -107,17 +114,19 @@ void SceneBuilder::add_points(const PrimitiveRequest&, const ParamList& params, 
   points.radius.reserve(points.size() + count);
   points.material.reserve(points.size() + count);
   points.shading_index.reserve(points.size() + count);
+  // Shared (uniform, constant) values are checked once, per-point ones at each point.
+  float w = shared_width;
+  PointShading shading{attributes_.color, attributes_.opacity};
   for (size_t i = 0; i < count; ++i) {
-    const float w = width ? width_clamps.apply(*width->value(i), 0, kFloatMax, i) : shared_width;
-    PointShading shading{attributes_.color, attributes_.opacity};
-    if (cs) {
+    if (width && (width->per_point || i == 0)) w = width_clamps.apply(*width->value(i), 0, kFloatMax, i);
+    if (cs && (cs->per_point || i == 0)) {
       const float* c = cs->value(i);
       shading.cs = {c[0], c[1], c[2]};
     }
-    if (os) {
+    if (os && (os->per_point || i == 0)) {
       const float* o = os->value(i);
-      shading.os = {opacity_clamps.apply(o[0], 0, 1, i), opacity_clamps.apply(o[1], 0, 1, i),
-                    opacity_clamps.apply(o[2], 0, 1, i)};
+      shading.os = {opacity_clamps.apply(o[0], 0, 1, i, 0), opacity_clamps.apply(o[1], 0, 1, i, 1),
+                    opacity_clamps.apply(o[2], 0, 1, i, 2)};
     }
     const Vec3f centre = to_world(P->floats.data() + 3 * i);
     const float radius = float(0.5 * double(w) * width_scale);
@@ -128,11 +137,10 @@ void SceneBuilder::add_points(const PrimitiveRequest&, const ParamList& params, 
     points.add(centre, radius, material, shading);
   }
   if (width_clamps.count > 0)
-    diag_.warning(
-        loc, "Points",
-        width ? width_clamps.message("width", "negative or not a number", 0, kFloatMax)
-              : fmt::format("\"constantwidth\" {} is negative or not a number: clamped to 0", given_constant_width));
-  if (opacity_clamps.count > 0) diag_.warning(loc, "Points", opacity_clamps.message("Os", "outside [0, 1]", 0, 1));
+    diag_.warning(loc, "Points",
+                  width ? width_clamps.message(*width, "width", "negative", 0, kFloatMax)
+                        : fmt::format("\"constantwidth\" {} is negative: clamped to 0", given_constant_width));
+  if (opacity_clamps.count > 0) diag_.warning(loc, "Points", opacity_clamps.message(*os, "Os", "outside [0, 1]", 0, 1));
   if (beyond_float_range > 0)
     diag_.warning(loc, "Points",
                   fmt::format("{} beyond the float range in world space: dropped",

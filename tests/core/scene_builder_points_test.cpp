@@ -65,10 +65,12 @@ TEST(SceneBuilderPoints, NegativeWidthsAndOpacitiesOutOfRangeAreClampedWithAWarn
   for (const Diagnostic& d : b.diagnostics)
     if (d.severity == Severity::Warning) warnings.push_back(d.str());
   ASSERT_EQ(warnings.size(), 2u);
-  EXPECT_NE(warnings[0].find("\"width\" of point 0 is -1, negative or not a number: clamped to 0 (2 numbers"),
+  EXPECT_NE(warnings[0].find("\"width\" (varying) value 0 is -1, negative: clamped to 0 (2 numbers clamped)"),
             std::string::npos)
       << warnings[0];
-  EXPECT_NE(warnings[1].find("\"Os\" of point 0 is 2, outside [0, 1]: clamped to 1 (2 numbers"), std::string::npos)
+  EXPECT_NE(
+      warnings[1].find("\"Os\" (varying) value 0 component 0 is 2, outside [0, 1]: clamped to 1 (2 numbers clamped)"),
+      std::string::npos)
       << warnings[1];
 }
 
