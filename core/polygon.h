@@ -36,6 +36,8 @@ struct PolygonShape {
   // Index of the face this shape came from (PointsPolygons / PointsGeneralPolygons), so that the
   // caller can find uniform and vertex data; 0 for shapes built directly with make().
   int source_face = 0;
+  // One of several faces of a mesh, which together make one surface (set by the scene builder).
+  bool piece = false;
 
   // loops_world[0] is the outer boundary, the others are holes (all in world space). Holes
   // with fewer than 3 points are ignored. Returns nullopt for a degenerate polygon: fewer than

@@ -172,6 +172,16 @@ class SceneBuilder : public RiTarget {
   using PrimitiveBuilder = void (SceneBuilder::*)(const PrimitiveRequest&, const ParamList&, const SourceLoc&);
   static PrimitiveBuilder find_primitive_builder(const std::string& request);
   void add_sphere(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  // The other quadrics (scene_builder_quadrics.cpp).
+  void add_cone(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_cylinder(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_disk(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_paraboloid(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_hyperboloid(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_torus(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  void add_quadric(Quadric quadric, const PrimitiveRequest& r, const SourceLoc& loc);
+  // SubdivisionMesh, tessellated to its limit surface (scene_builder_subdivision.cpp).
+  void add_subdivision_mesh(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
   // scene_builder_points.cpp
   void add_points(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
   // Moves a tessellated surface from the current object space to the world and stores it with

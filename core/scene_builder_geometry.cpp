@@ -334,7 +334,11 @@ void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const s
                                                       : fmt::format("{} points lie", beyond_float_range),
                               beyond_float_range == 1 ? "it" : "them"));
   uint32_t material = make_material(loc);
+  // The faces of a mesh (or a non-planar face's fan) meet edge to edge and may each be smaller
+  // than a footprint: pieces of one surface (SurfaceSet::is_piece).
+  const bool pieces = shapes.size() > 1;
   for (PolygonShape& s : shapes) {
+    s.piece = pieces;
     scene_->surfaces.polygons.push_back(std::move(s));
     scene_->surfaces.polygon_material.push_back(material);
   }

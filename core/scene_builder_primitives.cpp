@@ -22,6 +22,13 @@ bool all_finite(const Vec3f& p) { return std::isfinite(p.x) && std::isfinite(p.y
 SceneBuilder::PrimitiveBuilder SceneBuilder::find_primitive_builder(const std::string& request) {
   static constexpr std::pair<std::string_view, PrimitiveBuilder> kBuilders[] = {
       {"Sphere", &SceneBuilder::add_sphere},
+      {"Cone", &SceneBuilder::add_cone},
+      {"Cylinder", &SceneBuilder::add_cylinder},
+      {"Disk", &SceneBuilder::add_disk},
+      {"Paraboloid", &SceneBuilder::add_paraboloid},
+      {"Hyperboloid", &SceneBuilder::add_hyperboloid},
+      {"Torus", &SceneBuilder::add_torus},
+      {"SubdivisionMesh", &SceneBuilder::add_subdivision_mesh},
       {"Points", &SceneBuilder::add_points},
   };
   for (const auto& [name, builder] : kBuilders)

@@ -8,6 +8,7 @@ BBox SurfaceSet::bounds(uint32_t surface) const {
     case Kind::Sphere: return spheres[i].bounds();
     case Kind::Polygon: return polygons[i].bounds();
     case Kind::Triangle: return triangles.bounds(i);
+    case Kind::Quadric: return quadrics[i].bounds();
   }
   return {};
 }
@@ -18,6 +19,7 @@ uint32_t SurfaceSet::material(uint32_t surface) const {
     case Kind::Sphere: return sphere_material[i];
     case Kind::Polygon: return polygon_material[i];
     case Kind::Triangle: return triangle_material[i];
+    case Kind::Quadric: return quadric_material[i];
   }
   return 0;
 }
@@ -28,6 +30,7 @@ bool SurfaceSet::intersect(uint32_t surface, const Ray& ray, SurfaceHit& hit) co
     case Kind::Sphere: return spheres[i].intersect(ray, hit);
     case Kind::Polygon: return polygons[i].intersect(ray, hit);
     case Kind::Triangle: return triangles.intersect(i, ray, hit);
+    case Kind::Quadric: return quadrics[i].intersect(ray, hit);
   }
   return false;
 }
@@ -38,6 +41,7 @@ Vec3f SurfaceSet::geometric_normal(uint32_t surface, const Vec3f& p) const {
     case Kind::Sphere: return spheres[i].normal_at(p);
     case Kind::Polygon: return polygons[i].normal;
     case Kind::Triangle: return triangles.face_normal(i);
+    case Kind::Quadric: return quadrics[i].normal_at(p);
   }
   return {};
 }

@@ -2,11 +2,13 @@
 // and materials by surface index and never switch over the kinds themselves (DESIGN.md, "one
 // geometry dispatch point"). Analytic quadrics stay analytic here; patches, NURBS and
 // subdivision surfaces arrive as triangles. Surface index order: all spheres, then all
-// polygons, then all triangles (the order the acceleration structure is built in).
+// polygons, then all triangles, then the other quadrics (the order the acceleration structure
+// is built in).
 #pragma once
 
 #include "core/bbox.h"
 #include "core/polygon.h"
+#include "core/quadric.h"
 #include "core/ray.h"
 #include "core/sphere.h"
 #include "core/surface_hit.h"
@@ -18,15 +20,16 @@
 namespace darc {
 
 struct SurfaceSet {
-  enum class Kind { Sphere, Polygon, Triangle };
+  enum class Kind { Sphere, Polygon, Triangle, Quadric };
 
   std::vector<Sphere> spheres;
   std::vector<PolygonShape> polygons;
   TriangleStore triangles;
+  std::vector<Quadric> quadrics;  // Cone, Cylinder, Disk, Paraboloid, Hyperboloid, Torus
   // Per shape of each kind: an index into Scene::materials.
-  std::vector<uint32_t> sphere_material, polygon_material, triangle_material;
+  std::vector<uint32_t> sphere_material, polygon_material, triangle_material, quadric_material;
 
-  size_t size() const { return spheres.size() + polygons.size() + triangles.size(); }
+  size_t size() const { return spheres.size() + polygons.size() + triangles.size() + quadrics.size(); }
   bool empty() const { return size() == 0; }
 
   // The kind of surface `surface` and its index among that kind.
@@ -34,8 +37,10 @@ struct SurfaceSet {
     const uint32_t ns = uint32_t(spheres.size()), np = uint32_t(polygons.size());
     if (surface < ns) { local = surface; return Kind::Sphere; }
     if (surface < ns + np) { local = surface - ns; return Kind::Polygon; }
-    local = surface - ns - np;
-    return Kind::Triangle;
+    const uint32_t nt = uint32_t(triangles.size());
+    if (surface < ns + np + nt) { local = surface - ns - np; return Kind::Triangle; }
+    local = surface - ns - np - nt;
+    return Kind::Quadric;
   }
 
   BBox bounds(uint32_t surface) const;
@@ -45,16 +50,18 @@ struct SurfaceSet {
   bool intersect(uint32_t surface, const Ray& ray, SurfaceHit& hit) const;
   // The geometric normal (as intersect gives it) at p, a point on or next to the surface.
   Vec3f geometric_normal(uint32_t surface, const Vec3f& p) const;
-  // True for planar surfaces (polygons, triangles): a ray leaving one cannot hit it again.
+  // True for planar surfaces (polygons, triangles, disks): a ray leaving one cannot hit it again.
   bool is_flat(uint32_t surface) const {
     uint32_t i;
-    return locate(surface, i) != Kind::Sphere;
+    const Kind kind = locate(surface, i);
+    return kind == Kind::Quadric ? quadrics[i].flat : kind != Kind::Sphere;
   }
-  // True for the triangles of tessellated surfaces: pieces of a larger surface, often smaller
-  // than a ray's footprint, which together cover it without gaps.
+  // True for the triangles of tessellated surfaces and the faces of polygon meshes: pieces of a
+  // larger surface, often smaller than a ray's footprint, which together cover it without gaps.
   bool is_piece(uint32_t surface) const {
     uint32_t i;
-    return locate(surface, i) == Kind::Triangle;
+    const Kind kind = locate(surface, i);
+    return kind == Kind::Triangle || (kind == Kind::Polygon && polygons[i].piece);
   }
   // The normal shading uses at p: the geometric one, except on triangles with vertex normals.
   Vec3f shading_normal(uint32_t surface, const Vec3f& p) const;

@@ -14,18 +14,18 @@ PixelSamples 1 1
 Projection "perspective" "fov" [40]
 Translate 0 0 5
 WorldBegin
-  SubdivisionMesh "catmull-clark" [4] [0 1 2 3] [] [] [] [] "P" [-1 -1 0  1 -1 0  1 1 0  -1 1 0]
-  Cylinder 1 -1 1 360
+  Geometry "teapot"
+  Blobby 1 [1001 0] [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1] [""]
 WorldEnd
 FrameEnd
 )RIB");
   RunResult r = run_darc(dir.path(), "scene.rib");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("scene.rib:10:1: warning: WorldEnd: nothing renderable in frame 3: every primitive in it is "
-                       "of a kind darc does not support (Cylinder, SubdivisionMesh)"),
+                       "of a kind darc does not support (Blobby, Geometry)"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("scene.rib:8:3: warning: SubdivisionMesh: request \"SubdivisionMesh\" (RI Spec 3.2) is not "
+  EXPECT_NE(r.err.find("scene.rib:8:3: warning: Geometry: request \"Geometry\" (RI Spec 3.2) is not "
                        "supported: skipped"),
             std::string::npos)
       << r.err;

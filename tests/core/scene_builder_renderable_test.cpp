@@ -25,9 +25,9 @@ const char* const kCamera = "Projection \"perspective\" \"fov\" [40]\nTranslate 
 TEST(SceneBuilderRenderable, EveryPrimitiveUnsupported) {
   Built b = build(std::string(kCamera) + R"RIB(FrameBegin 7
 WorldBegin
-  Cylinder 1 0 1 360
-  Disk 0 1 360
-  Cylinder 1 0 2 360
+  Blobby 1 [1001 0] [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1] [""]
+  Geometry "teapot"
+  Blobby 1 [1001 0] [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1] [""]
 WorldEnd
 FrameEnd
 )RIB");
@@ -37,7 +37,7 @@ FrameEnd
   EXPECT_EQ(w[0].severity, Severity::Warning);
   EXPECT_EQ(w[0].message,
             "nothing renderable in frame 7: every primitive in it is of a kind darc does not support "
-            "(Cylinder x2, Disk)");
+            "(Blobby x2, Geometry)");
   EXPECT_EQ(w[0].loc.str(), "test.rib:8:1") << "at the WorldEnd";
 }
 
@@ -57,11 +57,11 @@ TEST(SceneBuilderRenderable, PrimitivesSkippedForErrors) {
 }
 
 TEST(SceneBuilderRenderable, UnsupportedPrimitivesInAnInstanceCount) {
-  Built b = build("WorldBegin\nObjectBegin \"o\" Torus 1 0.2 0 360 360 ObjectEnd\nObjectInstance \"o\"\nWorldEnd\n");
+  Built b = build("WorldBegin\nObjectBegin \"o\" Geometry \"teapot\" ObjectEnd\nObjectInstance \"o\"\nWorldEnd\n");
   const auto w = nothing_renderable(b);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_EQ(w[0].message,
-            "nothing renderable in frame 1: every primitive in it is of a kind darc does not support (Torus)");
+            "nothing renderable in frame 1: every primitive in it is of a kind darc does not support (Geometry)");
 }
 
 TEST(SceneBuilderRenderable, GeometryTheCameraCannotSee) {

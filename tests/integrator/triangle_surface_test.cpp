@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "integrator/built_scene.h"
 #include "integrator/render_frame.h"
@@ -147,6 +148,35 @@ TEST(TriangleSurface, PiecesSmallerThanAPixelCoverTheirFootprint) {
   // The plane is tilted 27 degrees to the view: across one pixel footprint its depth changes by
   // about 1 % of the depth.
   EXPECT_LT(depth_ratio(a, b), 1e-2) << "depth: the nearest piece, within the footprint's depth range";
+}
+
+// The same for the faces of a polygon mesh (what exporters write for most geometry).
+TEST(TriangleSurface, PolygonMeshFacesSmallerThanAPixelCoverTheirFootprint) {
+  constexpr int n = 150;
+  std::string rib = kQuadScene;
+  std::string mesh = "PointsPolygons [";
+  for (int k = 0; k < n * n; ++k) mesh += "4 ";
+  mesh += "] [";
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      mesh += std::to_string(a) + " " + std::to_string(a + 1) + " " + std::to_string(a + n + 2) + " " +
+              std::to_string(a + n + 1) + " ";
+    }
+  mesh += "] \"P\" [";
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double u = double(i) / n, v = double(j) / n;
+      mesh += std::to_string(-1.5 + 3 * u) + " " + std::to_string(-1.5 + 3 * v) + " " + std::to_string(0.5 + 1.5 * v) + " ";
+    }
+  mesh += "]";
+  const std::string polygon_line = "Polygon \"P\" [-1.5 -1.5 0.5  1.5 -1.5 0.5  1.5 1.5 2  -1.5 1.5 2]";
+  rib.replace(rib.find(polygon_line), polygon_line.size(), mesh);
+  const Scene polygon = build_scene(kQuadScene), faces = build_scene(rib);
+  ASSERT_EQ(faces.surfaces.polygons.size(), size_t(n * n));
+  const Difference d = compare(render(polygon, HiderKind::Distance, 1), render(faces, HiderKind::Distance, 1));
+  EXPECT_LT(d.rmse, 2e-3);
+  EXPECT_LT(d.max, 2e-2);
 }
 
 TEST(TriangleSurface, SameImageOnOneAndTwoThreads) {
