@@ -81,6 +81,7 @@ nlohmann::json counters_json(const RayCounters& c) {
           {"secondary_rays", c.secondary_rays},
           {"curve_segment_tests", c.segment_tests},
           {"surface_tests", c.surface_tests},
+          {"point_tests", c.point_tests},
           {"grid_cells_visited", c.cells_visited},  // grid cells or BVH nodes: the accelerator's steps
           {"rays_terminated_early", c.rays_terminated_early},
           {"fragments", c.fragments},

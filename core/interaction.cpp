@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace darc {
 
@@ -35,6 +36,34 @@ Vec3f transfer(const Vec3f& axis, const Vec3f& d, const Vec3f& n) {
   return perpendicular + slide;
 }
 
+// A point: a disc facing the ray, so N faces the ray as a non-oriented curve's does. Seen
+// through a footprint larger than the disc, P and the footprint are moved onto the part of the
+// footprint that is the disc (a square of its area around its centre), as a strand's band is:
+// rays leaving it start on it, and its shadow footprint is its own size, not the pixel's.
+Interaction point_interaction(const PointSet& points, uint32_t local, const Ray& ray, Interaction it,
+                              const RayFootprint* footprint) {
+  it.material = points.material[local];
+  it.N = -normalize(ray.d);
+  it.Cs = points.color(local);
+  it.Os = points.opacity(local);
+  if (!footprint) return it;
+  const Vec3f ax = transfer(footprint->axis_x(it.t), ray.d, it.N);
+  const Vec3f ay = transfer(footprint->axis_y(it.t), ray.d, it.N);
+  const float side = std::sqrt(length(cross(ax, ay)));
+  const float disc_side = std::sqrt(std::numbers::pi_v<float>) * points.radius[local];
+  const float scale = side > disc_side && side > 0.0f ? disc_side / side : 1.0f;
+  it.dPdx = ax * scale;
+  it.dPdy = ay * scale;
+  // The centre of that square: where the ray crosses the disc when the disc is the larger, kept
+  // inside the disc by half the square.
+  const Vec3f centre = points.center[local];
+  const Vec3f offset = it.P - centre;
+  const float room = std::max(0.0f, points.radius[local] - 0.5f * std::min(side, disc_side));
+  const float reach = length(offset);
+  if (reach > room) it.P = centre + (reach > 0.0f ? offset * (room / reach) : Vec3f{});
+  return it;
+}
+
 }  // namespace
 
 Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& ray, float t, float u,
@@ -63,6 +92,8 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
     it.dPdv = normalize(bezier_derivative(cp, u));
     if (length_squared(it.dPdv) == 0.0f) it.dPdv = normalize(cp[3] - cp[0]);
     plane_normal = -ray.d;
+  } else if (kind == Scene::PrimKind::Point) {
+    return point_interaction(scene.points, local, ray, it, footprint);
   } else {
     const SurfaceSet& surfaces = scene.surfaces;
     it.material = surfaces.material(local);

@@ -7,6 +7,7 @@
 #include "core/bbox.h"
 #include "core/camera.h"
 #include "core/curve_set.h"
+#include "core/point_set.h"
 #include "core/surface_set.h"
 #include "core/accelerator.h"
 #include "parser/param_list.h"
@@ -93,6 +94,7 @@ struct Scene {
   OutputSettings output;
   CurveSet curves;
   SurfaceSet surfaces;
+  PointSet points;  // RI Points: sub-pixel discs facing the ray
   std::vector<Material> materials;
   std::vector<LightDesc> lights;
 
@@ -102,20 +104,22 @@ struct Scene {
   std::string geometry_key;
 
   // One acceleration structure over everything: primitive index p < curves.size() is a curve
-  // segment, then the surfaces in SurfaceSet's order.
+  // segment, then the surfaces in SurfaceSet's order, then the points (last, so that scenes
+  // without points keep their order).
   Accelerator accel;
   BBox bounds;
 
-  // The kinds the tracers tell apart: sub-pixel curve segments and surfaces (every surface
-  // request, behind SurfaceSet). `local` is the index among that kind.
-  enum class PrimKind { CurveSegment, Surface };
+  // The kinds the tracers tell apart: sub-pixel curve segments, surfaces (every surface
+  // request, behind SurfaceSet) and sub-pixel points. `local` is the index among that kind.
+  enum class PrimKind { CurveSegment, Surface, Point };
   PrimKind prim_kind(uint32_t p, uint32_t& local) const {
-    const uint32_t nc = uint32_t(curves.size());
+    const uint32_t nc = uint32_t(curves.size()), ns = uint32_t(surfaces.size());
     if (p < nc) { local = p; return PrimKind::CurveSegment; }
-    local = p - nc;
-    return PrimKind::Surface;
+    if (p - nc < ns) { local = p - nc; return PrimKind::Surface; }
+    local = p - nc - ns;
+    return PrimKind::Point;
   }
-  size_t primitive_count() const { return curves.size() + surfaces.size(); }
+  size_t primitive_count() const { return curves.size() + surfaces.size() + points.size(); }
 
   // Builds the acceleration structure over the primitives (call once after all geometry is added).
   void build_acceleration(AcceleratorKind kind = kDefaultAccelerator);

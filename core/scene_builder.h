@@ -203,6 +203,8 @@ class SceneBuilder : public RiTarget {
   void add_patch_surface(PatchMeshDescription& mesh, const ParamList& params, const char* request,
                          const SourceLoc& loc);
   void add_nu_patch(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  // Points, sub-pixel discs beside the curves (scene_builder_points.cpp).
+  void add_points(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
   // Moves a tessellated surface from the current object space to the world and stores it with
   // `material` (from make_material). Returns how many triangles were kept (degenerate ones and
   // those beyond the float range in world space are dropped); false from reserve_frame_memory

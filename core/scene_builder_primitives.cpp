@@ -32,6 +32,7 @@ SceneBuilder::PrimitiveBuilder SceneBuilder::find_primitive_builder(const std::s
       {"Patch", &SceneBuilder::add_patch},
       {"PatchMesh", &SceneBuilder::add_patch_mesh},
       {"NuPatch", &SceneBuilder::add_nu_patch},
+      {"Points", &SceneBuilder::add_points},
   };
   for (const auto& [name, builder] : kBuilders)
     if (name == request) return builder;

@@ -26,6 +26,7 @@ BBox world_bounds(const Scene& scene) {
   BBox box;
   for (size_t i = 0; i < scene.curves.size(); ++i) box.extend(scene.curves.segment_bounds(i));
   for (uint32_t s = 0; s < scene.surfaces.size(); ++s) box.extend(scene.surfaces.bounds(s));
+  for (size_t i = 0; i < scene.points.size(); ++i) box.extend(scene.points.bounds(i));
   return box;
 }
 

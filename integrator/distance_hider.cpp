@@ -2,6 +2,7 @@
 
 #include "core/curve_basis.h"
 #include "core/interaction.h"
+#include "core/point_set_coverage.h"
 #include "core/ray_differentials.h"
 
 #include <limits>
@@ -98,6 +99,21 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
             ray.tmax = std::min(ray.tmax, sf.t);
             distance_ray.t_max = ray.tmax;
           }
+          break;
+        }
+        case Scene::PrimKind::Point: {
+          // Sub-pixel like a strand: its coverage and mask go into the A-buffer (a disc facing the
+          // ray has no back, so Sides does not apply).
+          const Material& m = scene.materials[scene.points.material[local]];
+          if (filter.shadow && m.transmission == Transmission::Transparent) return;
+          ++counters.point_tests;
+          PointFragmentHit h;
+          if (!intersect_point_distance(scene.points, local, distance_ray, ctx.settings.coverage, h,
+                                        ctx.settings.coverage_masks) ||
+              filter.skips_primitive(p, h.t))
+            return;
+          abuffer.add(Fragment{h.t, h.coverage, kNoStrand, p, 0, false, {}, {}, h.mask, -1, h.distance}, shade);
+          nearest = std::min(nearest, h.t);
           break;
         }
       }
@@ -211,13 +227,15 @@ Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, 
   const CurveSet& cs = scene.curves;
   HitFilter shadow = filter;
   shadow.shadow = true;
-  // Only opacity matters here: Os from the primitive (curve primvars, else the material), as
+  // Only opacity matters here: Os from the primitive (curve and point primvars, else the material), as
   // its Transmission attribute says.
   auto opacity = [&](const Fragment& f) -> ShadedFragment {
     uint32_t local;
     Scene::PrimKind kind = scene.prim_kind(f.primitive, local);
     if (kind == Scene::PrimKind::CurveSegment)
       return {Vec3f{}, shadow_opacity(scene.materials[cs.attribute_id[local]], bezier(cs.opacities(local), f.u))};
+    if (kind == Scene::PrimKind::Point)
+      return {Vec3f{}, shadow_opacity(scene.materials[scene.points.material[local]], scene.points.opacity(local))};
     const uint32_t material = scene.surfaces.material(local);
     return {Vec3f{}, shadow_opacity(scene.materials[material], scene.materials[material].opacity)};
   };

@@ -39,7 +39,7 @@ inline HitFilter shadow_filter(const Interaction& at) {
 }
 
 // The filter of a reflected or refracted ray leaving `at`: its strand is never hit; a planar
-// surface (polygon, triangle) cannot be hit again; a curved one only beyond `self_distance`
+// surface (polygon, triangle, point) cannot be hit again; a curved one only beyond `self_distance`
 // (a sphere's far side).
 inline HitFilter leaving_filter(const Interaction& at, const Scene& scene, float self_distance) {
   HitFilter f;
@@ -47,8 +47,9 @@ inline HitFilter leaving_filter(const Interaction& at, const Scene& scene, float
   if (!at.is_curve) {
     uint32_t local;
     f.origin_primitive = at.primitive;
-    scene.prim_kind(at.primitive, local);
-    f.origin_min_t = scene.surfaces.is_flat(local) ? std::numeric_limits<float>::infinity() : self_distance;
+    // A point's disc is flat too.
+    const bool flat = scene.prim_kind(at.primitive, local) != Scene::PrimKind::Surface || scene.surfaces.is_flat(local);
+    f.origin_min_t = flat ? std::numeric_limits<float>::infinity() : self_distance;
   }
   return f;
 }

@@ -18,6 +18,7 @@ struct RayCounters {
   uint64_t secondary_rays = 0;
   uint64_t segment_tests = 0;   // ray-curve segment intersection tests
   uint64_t surface_tests = 0;   // ray-sphere and ray-polygon tests
+  uint64_t point_tests = 0;     // ray-point (RI Points) tests
   uint64_t cells_visited = 0;   // grid cells visited
   uint64_t rays_terminated_early = 0;  // stopped because the remaining transmittance was negligible
   uint64_t fragments = 0;       // A-buffer fragments (distance hider)
@@ -41,6 +42,7 @@ struct RayCounters {
     secondary_rays += o.secondary_rays;
     segment_tests += o.segment_tests;
     surface_tests += o.surface_tests;
+    point_tests += o.point_tests;
     cells_visited += o.cells_visited;
     rays_terminated_early += o.rays_terminated_early;
     fragments += o.fragments;

@@ -41,6 +41,17 @@ bool Tracer::nearest_hit(const Ray& ray_in, Interaction& out, RayCounters& count
           ray.tmax = h.t;
           break;
         }
+        case Scene::PrimKind::Point: {
+          // A disc facing the ray has no back: Sides does not apply.
+          const Material& m = scene_.materials[scene_.points.material[local]];
+          if (filter.shadow && m.transmission == Transmission::Transparent) return;
+          ++counters.point_tests;
+          float t;
+          if (!intersect_point(scene_.points, local, ray, t) || filter.skips_primitive(p, t)) return;
+          best = p, best_t = t, best_u = 0;
+          ray.tmax = t;
+          break;
+        }
       }
   });
   if (best == kNoPrimitive) return false;

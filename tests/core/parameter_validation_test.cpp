@@ -374,6 +374,33 @@ std::vector<Row> geometry_rows() {
        warning(3, "PointsPolygons",
                "1 point lies beyond the float range in world space: the faces that use it are dropped"),
        [](const Scene& s) { EXPECT_EQ(s.surfaces.polygons.size(), 1u) << "the face without that point is kept"; }},
+      {"points-p", in_world("Points \"width\" [1]"), error(2, "Points", "Points needs \"P\""),
+       [](const Scene& s) { EXPECT_TRUE(s.points.empty()); }},
+      {"points-width-negative", in_world("Points \"P\" [0 0 0  1 0 0] \"width\" [0.1 -0.01]"),
+       warning(2, "Points", "\"width\" (varying) value 1 is -0.01, negative: clamped to 0 (1 number clamped)"),
+       [](const Scene& s) {
+         ASSERT_EQ(s.points.size(), 2u);
+         EXPECT_EQ(s.points.radius[1], 0.0f);
+       }},
+      {"points-constantwidth-negative", in_world("Points \"P\" [0 0 0] \"constantwidth\" [-0.1]"),
+       warning(2, "Points", "\"constantwidth\" -0.1 is negative: clamped to 0"),
+       [](const Scene& s) {
+         ASSERT_EQ(s.points.size(), 1u);
+         EXPECT_EQ(s.points.radius[0], 0.0f);
+       }},
+      {"points-os", in_world("Points \"P\" [0 0 0] \"constant color Os\" [0.5 1.5 0.5]"),
+       warning(2, "Points",
+               "\"Os\" (constant) value 0 component 1 is 1.5, outside [0, 1]: clamped to 1 (1 number clamped)"),
+       [](const Scene& s) {
+         ASSERT_EQ(s.points.size(), 1u);
+         EXPECT_EQ(s.points.opacity(0), (Vec3f{0.5f, 1, 0.5f}));
+       }},
+      {"points-count", in_world("Points \"P\" [0 0 0  1 0 0] \"width\" [0.1]"),
+       error(2, "Points", "\"width\" (varying) needs 2 numbers for 2 values, found 1"),
+       [](const Scene& s) { EXPECT_TRUE(s.points.empty()); }},
+      {"points-world-range", in_world("Scale 1e30 1e30 1e30\nPoints \"P\" [0 0 0  1e10 0 0] \"constantwidth\" [1e-30]"),
+       warning(3, "Points", "1 point lies beyond the float range in world space: dropped"),
+       [](const Scene& s) { EXPECT_EQ(s.points.size(), 1u) << "the other point is kept"; }},
   };
 }
 
