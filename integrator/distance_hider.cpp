@@ -5,6 +5,7 @@
 #include "core/point_set_coverage.h"
 #include "core/ray_differentials.h"
 
+#include <cmath>
 #include <limits>
 
 namespace darc {
@@ -88,7 +89,9 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
             return scene.surfaces.intersect(local, r, h) && !m.hides_back_of(h.ng, r.d);
           };
           SurfaceFragment sf;
-          if (!surface_coverage(ray, footprint, hit_surface, sf, scene.surfaces.is_piece(local))) return;
+          const BBox piece_box = scene.surfaces.is_piece(local) ? scene.surfaces.bounds(local) : BBox{};
+          if (!surface_coverage(ray, footprint, hit_surface, sf, scene.surfaces.is_piece(local) ? &piece_box : nullptr))
+            return;
           Fragment f{sf.t, sf.coverage, kNoStrand, p, 0, false, {}, {}, sf.mask, sf.point};
           if (!ctx.settings.coverage_masks) f.mask = kFullMask;
           abuffer.add(f, shade);
@@ -153,6 +156,37 @@ Ray footprint_sub_ray(const Ray& ray, const RayFootprint& footprint, int point) 
   r.o = ray.o + footprint.dox * u + footprint.doy * v;
   r.d = ray.d + footprint.ddx * u + footprint.ddy * v;
   return r;
+}
+
+FootprintCells footprint_cells(const Ray& ray, const RayFootprint& footprint, const BBox& bounds) {
+  const FootprintCells whole;
+  const float dd = dot(ray.d, ray.d);
+  if (!(dd > 0)) return whole;
+  float u0 = std::numeric_limits<float>::infinity(), u1 = -u0, v0 = u0, v1 = -u0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3f x{(corner & 1) ? bounds.hi.x : bounds.lo.x, (corner & 2) ? bounds.hi.y : bounds.lo.y,
+                  (corner & 4) ? bounds.hi.z : bounds.lo.z};
+    const float t = dot(x - ray.o, ray.d) / dd;
+    if (!(t > 0)) return whole;
+    const Vec3f ax = footprint.axis_x(t), ay = footprint.axis_y(t), w = x - ray.at(t);
+    // w ~ ax u + ay v, least squares.
+    const float a11 = dot(ax, ax), a12 = dot(ax, ay), a22 = dot(ay, ay), b1 = dot(w, ax), b2 = dot(w, ay);
+    const float det = a11 * a22 - a12 * a12;
+    if (!(det > 1e-12f * a11 * a22) || !std::isfinite(det)) return whole;
+    const float u = (a22 * b1 - a12 * b2) / det, v = (a11 * b2 - a12 * b1) / det;
+    u0 = std::min(u0, u), u1 = std::max(u1, u), v0 = std::min(v0, v), v1 = std::max(v1, v);
+  }
+  // Sub-ray (col, row) sits at u = (col + 0.5) / kMaskSide - 0.5 (footprint_sub_ray).
+  auto cell = [](float u) { return (u + 0.5f) * float(kMaskSide) - 0.5f; };
+  FootprintCells c;
+  c.col0 = int(std::max(0.0f, std::floor(cell(u0) - kPieceCellMargin)));
+  c.col1 = int(std::min(float(kMaskSide - 1), std::ceil(cell(u1) + kPieceCellMargin)));
+  c.row0 = int(std::max(0.0f, std::floor(cell(v0) - kPieceCellMargin)));
+  c.row1 = int(std::min(float(kMaskSide - 1), std::ceil(cell(v1) + kPieceCellMargin)));
+  if (!(cell(u1) + kPieceCellMargin >= 0) || !(cell(v1) + kPieceCellMargin >= 0) ||
+      !(cell(u0) - kPieceCellMargin <= float(kMaskSide - 1)) || !(cell(v0) - kPieceCellMargin <= float(kMaskSide - 1)))
+    return FootprintCells{1, 0, 1, 0};  // entirely outside
+  return c;
 }
 
 DistanceContext make_distance_context(const HiderContext& base, const DistanceHiderSettings& settings) {

@@ -12,6 +12,7 @@
 #include "integrator/hit_filter.h"
 #include "integrator/ray_scratch.h"
 #include "integrator/secondary_rays.h"
+#include "core/bbox.h"
 #include "core/coverage_mask.h"
 #include "core/surface_hit.h"
 #include "integrator/stochastic_hider.h"
@@ -56,9 +57,9 @@ Ray footprint_sub_ray(const Ray& ray, const RayFootprint& footprint, int point);
 // tried first; when all five hit, the surface covers the footprint (exact for convex shapes; a
 // hole smaller than the footprint between the five points is missed), when none does, it is
 // taken to miss it (a surface smaller than the footprint between them is missed) unless it is a
-// piece of a tessellated surface (`piece`): pieces are often smaller than the footprint, and a
-// mesh of them must cover every point a sub-ray of it hits, so they are always tried at every
-// point when the five do not all hit.
+// piece of a tessellated surface or mesh (`piece_bounds`, its box): pieces are often smaller than
+// the footprint, and a mesh of them must cover every point a sub-ray of it hits, so they are
+// tried at every mask point their box can reach (footprint_cells) when the five do not all hit.
 struct SurfaceFragment {
   float t = 0;
   float coverage = 0;
@@ -66,37 +67,63 @@ struct SurfaceFragment {
   int point = -1;  // the sub-ray whose hit is shaded (-1: the ray itself)
 };
 
+// The rectangle of footprint mask points [col0, col1] x [row0, row1] whose sub-rays can meet
+// the box `bounds`: its corners projected into the footprint's (u, v) at their depths along the
+// ray, widened by kPieceCellMargin cells for the footprint's curvature across the box. The whole
+// grid when that cannot be known (a corner behind the ray's origin, degenerate axes).
+struct FootprintCells {
+  int col0 = 0, col1 = kMaskSide - 1, row0 = 0, row1 = kMaskSide - 1;
+  bool empty() const { return col0 > col1 || row0 > row1; }
+  bool whole() const { return col0 == 0 && row0 == 0 && col1 == kMaskSide - 1 && row1 == kMaskSide - 1; }
+};
+// The projection is exact to first order in the footprint's size; one cell more on each side
+// covers the rest for any footprint the hiders make (spreads up to 0.15 rad, ray_differentials.cpp).
+inline constexpr float kPieceCellMargin = 1.0f;
+FootprintCells footprint_cells(const Ray& ray, const RayFootprint& footprint, const BBox& bounds);
+
 template <class HitSurface>
 bool surface_coverage(const Ray& ray, const RayFootprint& footprint, HitSurface&& hit_surface, SurfaceFragment& out,
-                      bool piece = false) {
+                      const BBox* piece_bounds = nullptr) {
   SurfaceHit h;
-  bool centre = hit_surface(ray, h);
-  float centre_t = h.t;
-  if (!footprint.has_differentials()) {
-    if (!centre) return false;
-    out = {centre_t, 1.0f, kFullMask, -1};
-    return true;
-  }
   constexpr int kLast = kMaskSide * kMaskSide - 1;
-  const int corners[4] = {0, kMaskSide - 1, kLast - (kMaskSide - 1), kLast};
-  int corner_hits = 0;
-  for (int c : corners) corner_hits += hit_surface(footprint_sub_ray(ray, footprint, c), h);
-  if (centre && corner_hits == 4) {
-    out = {centre_t, 1.0f, kFullMask, -1};
-    return true;
+  // A piece of a tessellated surface is tried at the mask points its box can reach, only.
+  const FootprintCells cells = piece_bounds && footprint.has_differentials()
+                                   ? footprint_cells(ray, footprint, *piece_bounds)
+                                   : FootprintCells{};
+  if (cells.empty()) return false;
+  const bool piece = piece_bounds != nullptr;
+  bool centre = false;
+  float centre_t = 0;
+  if (cells.whole() || !piece) {
+    centre = hit_surface(ray, h);
+    centre_t = h.t;
+    if (!footprint.has_differentials()) {
+      if (!centre) return false;
+      out = {centre_t, 1.0f, kFullMask, -1};
+      return true;
+    }
+    const int corners[4] = {0, kMaskSide - 1, kLast - (kMaskSide - 1), kLast};
+    int corner_hits = 0;
+    for (int c : corners) corner_hits += hit_surface(footprint_sub_ray(ray, footprint, c), h);
+    if (centre && corner_hits == 4) {
+      out = {centre_t, 1.0f, kFullMask, -1};
+      return true;
+    }
+    if (!centre && corner_hits == 0 && !piece) return false;
   }
-  if (!centre && corner_hits == 0 && !piece) return false;
   CoverageMask mask = 0;
   float nearest_t = std::numeric_limits<float>::infinity();
   int nearest_point = -1;
-  for (int b = 0; b <= kLast; ++b) {
-    if (!hit_surface(footprint_sub_ray(ray, footprint, b), h)) continue;
-    mask |= CoverageMask{1} << b;
-    if (h.t < nearest_t) {
-      nearest_t = h.t;
-      nearest_point = b;
+  for (int row = cells.row0; row <= cells.row1; ++row)
+    for (int col = cells.col0; col <= cells.col1; ++col) {
+      const int b = row * kMaskSide + col;
+      if (!hit_surface(footprint_sub_ray(ray, footprint, b), h)) continue;
+      mask |= CoverageMask{1} << b;
+      if (h.t < nearest_t) {
+        nearest_t = h.t;
+        nearest_point = b;
+      }
     }
-  }
   if (mask == 0) return false;
   out.mask = mask;
   out.coverage = float(mask_count(mask)) / float(kLast + 1);
