@@ -166,8 +166,10 @@ FootprintCells footprint_cells(const Ray& ray, const RayFootprint& footprint, co
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3f x{(corner & 1) ? bounds.hi.x : bounds.lo.x, (corner & 2) ? bounds.hi.y : bounds.lo.y,
                   (corner & 4) ? bounds.hi.z : bounds.lo.z};
-    const float t = dot(x - ray.o, ray.d) / dd;
-    if (!(t > 0)) return whole;
+    // A corner behind the ray's origin (the neighbours of the piece a shadow ray leaves) is
+    // placed where the footprint starts: sub-rays only reach the box's part in front.
+    const float t = std::max(0.0f, dot(x - ray.o, ray.d) / dd);
+    if (!std::isfinite(t)) return whole;
     const Vec3f ax = footprint.axis_x(t), ay = footprint.axis_y(t), w = x - ray.at(t);
     // w ~ ax u + ay v, least squares.
     const float a11 = dot(ax, ax), a12 = dot(ax, ay), a22 = dot(ay, ay), b1 = dot(w, ax), b2 = dot(w, ay);
