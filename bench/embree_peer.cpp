@@ -5,7 +5,10 @@
 // prints the error between the two images (they trace the same rays through the same flat
 // ribbons, so it must be far below the noise of either).
 //
-//   embree_peer [--samples N] [--threads T] [--seed S] [-o OUT.exr|.png] [--compare-darc] FILE.rib
+// --max-rmse X makes that comparison a check: exit 1 when the RMSE is above X (ctest runs it
+// on curves, quadrics and tessellated surfaces when Embree is installed).
+//
+//   embree_peer [--samples N] [--threads T] [--seed S] [-o OUT.exr|.png] [--compare-darc [--max-rmse X]] FILE.rib
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -26,6 +29,7 @@ int main(int argc, char** argv) {
   std::string rib, output;
   EmbreeRenderOptions options;
   bool compare_darc = false;
+  double max_rmse = -1;
   CLI::App app{"Embree 3 peer: the stochastic method with Embree's BVH and curve intersectors, darc's shading"};
   app.add_option("--samples", options.samples_per_axis, "N of the N x N jittered samples per pixel")
       ->check(CLI::Range(1, 256));
@@ -33,6 +37,8 @@ int main(int argc, char** argv) {
   app.add_option("--seed", options.seed, "seed of the sample positions (darc's --seed)");
   app.add_option("-o,--output", output, "write the image (.exr scene-linear, .png/.tif through the display transform)");
   app.add_flag("--compare-darc", compare_darc, "also render darc's stochastic hider and print the RMSE between them");
+  app.add_option("--max-rmse", max_rmse, "with --compare-darc: exit 1 when the RMSE is above this")
+      ->needs("--compare-darc");
   app.add_option("rib", rib, "FILE.rib")->required();
   CLI11_PARSE(app, argc, argv);
 
@@ -47,9 +53,8 @@ int main(int argc, char** argv) {
     return 3;
   }
   const Scene& scene = loaded->scene;
-  std::printf("scene %s: %dx%d, %zu curve segments, %zu spheres, %zu polygons; parse %.3f s\n", rib.c_str(),
-              scene.output.xres, scene.output.yres, scene.curves.size(), scene.surfaces.spheres.size(), scene.surfaces.polygons.size(),
-              loaded->parse_seconds);
+  std::printf("scene %s: %dx%d, %zu curve segments, %zu surfaces; parse %.3f s\n", rib.c_str(), scene.output.xres,
+              scene.output.yres, scene.curves.size(), scene.surfaces.size(), loaded->parse_seconds);
 
   uint64_t rss_before = resident_bytes();
   EmbreeBuildStats build;
@@ -106,6 +111,10 @@ int main(int argc, char** argv) {
     }
     std::printf("darc stochastic %dx%d: %.3f s; embree vs darc: RMSE %.3g, max %.3g (RGBA)\n",
                 options.samples_per_axis, options.samples_per_axis, fs.render_seconds, e->rmse, e->max_error);
+    if (max_rmse >= 0 && !(e->rmse <= max_rmse)) {
+      std::fprintf(stderr, "embree_peer: error: RMSE %.3g against darc is above --max-rmse %.3g\n", e->rmse, max_rmse);
+      return 1;
+    }
   }
   return 0;
 }

@@ -83,19 +83,19 @@ std::optional<std::pair<ShadingPoint, uint32_t>> shading_point(const RenderConte
       sp.dPdv = curve_tangent(cs.control_points(i), u, ray.d);
       break;
     }
-    case EmbreeGeometry::Kind::Triangles:
-    case EmbreeGeometry::Kind::Polygons:
-    case EmbreeGeometry::Kind::Spheres: {
-      const bool is_sphere = g.kind == EmbreeGeometry::Kind::Spheres;
-      material = is_sphere ? ctx.scene.surfaces.sphere_material[i] : ctx.scene.surfaces.polygon_material[i];
+    case EmbreeGeometry::Kind::PolygonTriangles:
+    case EmbreeGeometry::Kind::Surfaces: {
+      // The surface index in Scene::surfaces; convex polygons come as triangles of polygon i.
+      const SurfaceSet& surfaces = ctx.scene.surfaces;
+      const uint32_t surface =
+          g.kind == EmbreeGeometry::Kind::PolygonTriangles ? uint32_t(surfaces.spheres.size()) + i : i;
+      material = surfaces.material(surface);
       const Material& m = ctx.scene.materials[material];
-      // darc's own normal: the polygon's plane normal (not the triangle's winding), the sphere's
-      // from its intersector (stored in Ng by the user geometry).
-      Vec3f ng = g.kind == EmbreeGeometry::Kind::Triangles ? ctx.scene.surfaces.polygons[i].normal
-                                                           : Vec3f{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
-      Vec3f n = m.flip_normals ? -ng : ng;
-      if (m.sides == 1 && dot(n, ray.d) > 0) return std::nullopt;
-      sp.N = n;
+      // darc's own normals, as core/interaction.cpp builds them (not the triangle's winding).
+      const Vec3f ng = surfaces.geometric_normal(surface, sp.P);
+      if (m.hides_back_of(ng, ray.d)) return std::nullopt;
+      const Vec3f ns = surfaces.shading_normal(surface, sp.P);
+      sp.N = m.flip_normals ? -ns : ns;
       sp.Cs = m.color;
       sp.Os = m.opacity;
       break;

@@ -49,12 +49,11 @@ bool is_convex_single_loop(const PolygonShape& shape) {
 
 void user_bounds(const RTCBoundsFunctionArguments* args) {
   const auto* g = static_cast<const EmbreeGeometry*>(args->geometryUserPtr);
-  const uint32_t i = g->source[args->primID];
-  BBox b = g->kind == EmbreeGeometry::Kind::Spheres ? g->scene->spheres[i].bounds() : g->scene->polygons[i].bounds();
+  const BBox b = g->scene->surfaces.bounds(g->source[args->primID]);
   *args->bounds_o = RTCBounds{b.lo.x, b.lo.y, b.lo.z, 0, b.hi.x, b.hi.y, b.hi.z, 0};
 }
 
-// darc's own sphere and polygon intersection inside Embree's traversal, with darc's one-sided
+// darc's own surface intersection inside Embree's traversal, with darc's one-sided
 // culling (Sides 1 seen from behind is not a hit, as integrator/tracer.cpp). Only rtcIntersect1
 // is used, so rays come one at a time (N == 1).
 void user_intersect(const RTCIntersectFunctionNArguments* args) {
@@ -65,12 +64,10 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
   const RTCRay& r = rayhit->ray;
   Ray ray{{r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}, r.tnear, r.tfar};
   const uint32_t i = g->source[args->primID];
-  const bool is_sphere = g->kind == EmbreeGeometry::Kind::Spheres;
   SurfaceHit h;
-  if (!(is_sphere ? scene.surfaces.spheres[i].intersect(ray, h) : scene.surfaces.polygons[i].intersect(ray, h))) return;
-  const Material& m = scene.materials[is_sphere ? scene.surfaces.sphere_material[i] : scene.surfaces.polygon_material[i]];
-  Vec3f n = m.flip_normals ? -h.ng : h.ng;
-  if (m.sides == 1 && dot(n, ray.d) > 0) return;
+  if (!scene.surfaces.intersect(i, ray, h)) return;
+  const Material& m = scene.materials[scene.surfaces.material(i)];
+  if (m.hides_back_of(h.ng, ray.d)) return;
   rayhit->ray.tfar = h.t;
   rayhit->hit.u = h.u;
   rayhit->hit.v = h.v;
@@ -107,10 +104,6 @@ std::unique_ptr<EmbreeScene> EmbreeScene::build(const Scene& scene, int threads,
   es->add_curves(false, stats);
   es->add_curves(true, stats);
   es->add_polygons(stats);
-  std::vector<uint32_t> spheres;
-  for (uint32_t i = 0; i < scene.surfaces.spheres.size(); ++i)
-    if (!scene.surfaces.spheres[i].degenerate) spheres.push_back(i);
-  es->add_user_geometry(EmbreeGeometry::Kind::Spheres, std::move(spheres), stats);
   stats.setup_seconds = seconds_since(t0);
   Clock::time_point t1 = Clock::now();
   rtcCommitScene(es->scene_);
@@ -175,17 +168,23 @@ void EmbreeScene::add_curves(bool oriented, EmbreeBuildStats& stats) {
   geometries_.push_back(std::move(g));
 }
 
+// Convex single-loop polygons become Embree triangles; every other surface (spheres, other
+// polygons, the triangles of tessellated surfaces, quadrics) is user geometry.
 void EmbreeScene::add_polygons(EmbreeBuildStats& stats) {
-  std::vector<uint32_t> general;  // not a convex single loop: user geometry
+  const SurfaceSet& surfaces = source_.surfaces;
+  std::vector<uint32_t> general;  // surface indices for user geometry
+  const uint32_t spheres = uint32_t(surfaces.spheres.size()), polygons = uint32_t(surfaces.polygons.size());
+  for (uint32_t i = 0; i < spheres; ++i)
+    if (!surfaces.spheres[i].degenerate) general.push_back(i);
   auto g = std::make_unique<EmbreeGeometry>();
-  g->kind = EmbreeGeometry::Kind::Triangles;
+  g->kind = EmbreeGeometry::Kind::PolygonTriangles;
   g->scene = &source_;
   std::vector<Vec3f> points;
   std::vector<unsigned> triangles;
   for (uint32_t i = 0; i < source_.surfaces.polygons.size(); ++i) {
     const PolygonShape& shape = source_.surfaces.polygons[i];
     if (!is_convex_single_loop(shape)) {
-      general.push_back(i);
+      general.push_back(spheres + i);
       continue;
     }
     std::vector<Vec3f> loop = loop_points_3d(shape, 0);
@@ -211,15 +210,16 @@ void EmbreeScene::add_polygons(EmbreeBuildStats& stats) {
     stats.triangles += g->source.size();
     geometries_.push_back(std::move(g));
   }
-  add_user_geometry(EmbreeGeometry::Kind::Polygons, std::move(general), stats);
+  for (uint32_t i = spheres + polygons; i < surfaces.size(); ++i) general.push_back(i);
+  add_user_geometry(std::move(general), stats);
 }
 
-void EmbreeScene::add_user_geometry(EmbreeGeometry::Kind kind, std::vector<uint32_t> source, EmbreeBuildStats& stats) {
-  if (source.empty()) return;
+void EmbreeScene::add_user_geometry(std::vector<uint32_t> surfaces, EmbreeBuildStats& stats) {
+  if (surfaces.empty()) return;
   auto g = std::make_unique<EmbreeGeometry>();
-  g->kind = kind;
+  g->kind = EmbreeGeometry::Kind::Surfaces;
   g->scene = &source_;
-  g->source = std::move(source);
+  g->source = std::move(surfaces);
   RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
   rtcSetGeometryUserPrimitiveCount(geom, unsigned(g->source.size()));
   rtcSetGeometryUserData(geom, g.get());

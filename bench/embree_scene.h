@@ -37,9 +37,11 @@ namespace darc::bench {
 inline constexpr float kCurveTessellationRate = 16;
 
 // What a geometry id of the Embree scene is, and for each of its primitives the index of the
-// darc primitive it came from (segment, sphere or polygon index).
+// darc primitive it came from: a curve segment (curves), a polygon (convex polygons given to
+// Embree as triangle fans), or a surface of Scene::surfaces (every other surface: darc's own
+// intersector as Embree user geometry, through the SurfaceSet interface).
 struct EmbreeGeometry {
-  enum class Kind { FlatCurves, OrientedCurves, Triangles, Spheres, Polygons };
+  enum class Kind { FlatCurves, OrientedCurves, PolygonTriangles, Surfaces };
   Kind kind = Kind::FlatCurves;
   std::vector<uint32_t> source;  // primID -> darc index
   const Scene* scene = nullptr;  // for the user geometry callbacks
@@ -83,7 +85,7 @@ class EmbreeScene {
   explicit EmbreeScene(const Scene& source) : source_(source) {}
   void add_curves(bool oriented, EmbreeBuildStats& stats);
   void add_polygons(EmbreeBuildStats& stats);
-  void add_user_geometry(EmbreeGeometry::Kind kind, std::vector<uint32_t> source, EmbreeBuildStats& stats);
+  void add_user_geometry(std::vector<uint32_t> surfaces, EmbreeBuildStats& stats);
 
   const Scene& source_;
   RTCDevice device_ = nullptr;
