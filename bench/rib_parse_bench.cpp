@@ -21,74 +21,14 @@ constexpr int kStrandsPerCall = 100;
 constexpr int kVerticesPerStrand = 10;
 
 // Receives every request and does nothing, so the benchmark measures only reading.
-class NullTarget : public RiTarget {
+class NullTarget : public RiTargetDefaults {
  public:
   size_t params_seen = 0;
-  void version(double, const SourceLoc&) override {}
-  void declare(const std::string&, const std::string&, const SourceLoc&) override {}
   void option(const std::string&, const ParamList& p, const SourceLoc&) override { params_seen += p.params.size(); }
-  void format(int, int, double, const SourceLoc&) override {}
-  void frame_aspect_ratio(double, const SourceLoc&) override {}
-  void screen_window(double, double, double, double, const SourceLoc&) override {}
-  void crop_window(double, double, double, double, const SourceLoc&) override {}
-  void projection(const std::string&, const ParamList&, const SourceLoc&) override {}
-  void clipping(double, double, const SourceLoc&) override {}
-  void pixel_samples(double, double, const SourceLoc&) override {}
-  void pixel_filter(const std::string&, double, double, const SourceLoc&) override {}
-  void exposure(double, double, const SourceLoc&) override {}
-  void quantize(const std::string&, int, int, int, double, const SourceLoc&) override {}
-  void display(const std::string&, const std::string&, const std::string&, const ParamList&,
-               const SourceLoc&) override {}
-  void hider(const std::string&, const ParamList&, const SourceLoc&) override {}
-  void ignored_request(const std::string&, const std::vector<double>&, const std::vector<std::string>&,
-                       const SourceLoc&) override {}
-  void frame_begin(int, const SourceLoc&) override {}
-  void frame_end(const SourceLoc&) override {}
-  void world_begin(const SourceLoc&) override {}
-  void world_end(const SourceLoc&) override {}
-  void attribute_begin(const SourceLoc&) override {}
-  void attribute_end(const SourceLoc&) override {}
-  void transform_begin(const SourceLoc&) override {}
-  void transform_end(const SourceLoc&) override {}
-  void identity(const SourceLoc&) override {}
-  void transform(const std::array<double, 16>&, const SourceLoc&) override {}
-  void concat_transform(const std::array<double, 16>&, const SourceLoc&) override {}
-  void translate(double, double, double, const SourceLoc&) override {}
-  void rotate(double, double, double, double, const SourceLoc&) override {}
-  void scale(double, double, double, const SourceLoc&) override {}
-  void perspective(double, const SourceLoc&) override {}
-  void coordinate_system(const std::string&, const SourceLoc&) override {}
-  void coord_sys_transform(const std::string&, const SourceLoc&) override {}
-  void attribute(const std::string&, const ParamList&, const SourceLoc&) override {}
-  void orientation(const std::string&, const SourceLoc&) override {}
-  void reverse_orientation(const SourceLoc&) override {}
-  void sides(int, const SourceLoc&) override {}
-  void color(const std::array<float, 3>&, const SourceLoc&) override {}
-  void opacity(const std::array<float, 3>&, const SourceLoc&) override {}
-  void surface(const std::string&, const ParamList&, const SourceLoc&) override {}
-  void displacement(const std::string&, const ParamList&, const SourceLoc&) override {}
-  void light_source(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
-  void area_light_source(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
-  void bxdf(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
-  void light(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
-  void pattern(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
-  void integrator(const std::string&, const std::string&, const ParamList&, const SourceLoc&) override {}
-  void illuminate(const std::string&, bool, const SourceLoc&) override {}
-  void basis(const BasisArg&, int, const BasisArg&, int, const SourceLoc&) override {}
-  void object_begin(const std::string&, const SourceLoc&) override {}
-  void object_end(const SourceLoc&) override {}
-  void object_instance(const std::string&, const SourceLoc&) override {}
   void curves(const std::string&, const std::vector<int>&, const std::string&, const ParamList& p,
               const SourceLoc&) override {
     params_seen += p.params.size();
   }
-  void primitive(const PrimitiveRequest&, const ParamList&, const SourceLoc&) override {}
-  void polygon(const ParamList&, const SourceLoc&) override {}
-  void general_polygon(const std::vector<int>&, const ParamList&, const SourceLoc&) override {}
-  void points_polygons(const std::vector<int>&, const std::vector<int>&, const ParamList&, const SourceLoc&) override {}
-  void points_general_polygons(const std::vector<int>&, const std::vector<int>&, const std::vector<int>&,
-                               const ParamList&, const SourceLoc&) override {}
-  void skipped_primitive(const std::string&, const SourceLoc&) override {}
 };
 
 void append_number(std::string& out, double v) {

@@ -441,4 +441,8 @@ void SceneBuilder::basis(const BasisArg& u, int ustep, const BasisArg& v, int vs
   attributes_.vbasis = vb;
 }
 
+// Version and Declare change nothing in a scene (the parser keeps the declarations).
+void SceneBuilder::version(double, const SourceLoc&) {}
+void SceneBuilder::declare(const std::string&, const std::string&, const SourceLoc&) {}
+
 }  // namespace darc

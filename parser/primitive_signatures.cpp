@@ -51,6 +51,8 @@ constexpr std::array kSignatures = {
 
 }  // namespace
 
+std::span<const PrimitiveSignature> primitive_signatures() { return kSignatures; }
+
 const PrimitiveSignature* find_primitive_signature(std::string_view request) {
   for (const PrimitiveSignature& s : kSignatures)
     if (s.request == request) return &s;

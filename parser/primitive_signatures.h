@@ -30,6 +30,9 @@ struct PrimitiveSignature {
   std::span<const PrimitiveArgSpec> args;
 };
 
+// Every request that goes through RiTarget::primitive.
+std::span<const PrimitiveSignature> primitive_signatures();
+
 // The signature of `request`, or nullptr when it does not go through RiTarget::primitive.
 const PrimitiveSignature* find_primitive_signature(std::string_view request);
 

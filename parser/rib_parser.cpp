@@ -444,7 +444,34 @@ std::optional<RecordedArchive> RibParser::record_archive(std::string text, const
   return archive;
 }
 
+namespace {
+
+// Keeps the variables conditional RIB can refer to in step with replayed calls, as the parser's
+// own handlers of these requests do when it reads them.
+class ConditionTracker : public RiTargetDefaults {
+ public:
+  explicit ConditionTracker(ConditionVariables& conditions) : conditions_(conditions) {}
+  void frame_begin(int number, const SourceLoc&) override { conditions_.frame_begin(number); }
+  void frame_end(const SourceLoc&) override { conditions_.frame_end(); }
+  void world_begin(const SourceLoc&) override { conditions_.world_begin(); }
+  void world_end(const SourceLoc&) override { conditions_.world_end(); }
+  void attribute_begin(const SourceLoc&) override { conditions_.attribute_begin(); }
+  void attribute_end(const SourceLoc&) override { conditions_.attribute_end(); }
+  void option(const std::string& category, const ParamList& params, const SourceLoc&) override {
+    conditions_.option(category, params);
+  }
+  void attribute(const std::string& category, const ParamList& params, const SourceLoc&) override {
+    conditions_.attribute(category, params);
+  }
+
+ private:
+  ConditionVariables& conditions_;
+};
+
+}  // namespace
+
 void RibParser::replay(const RecordedArchive& archive) {
+  ConditionTracker condition_tracker(conditions_);
   for (size_t i = 0; i < archive.events.size(); ++i) {
     const RecordedArchive::Event& e = archive.events[i];
     if (diag_.aborted()) return;
@@ -462,11 +489,7 @@ void RibParser::replay(const RecordedArchive& archive) {
     try {
       e.call.call(target_);
       // What conditional RIB can refer to, as the requests' own handlers keep it.
-      const std::string& r = e.call.request;
-      if (r == "FrameBegin") conditions_.frame_begin(e.call.number);
-      else if (r == "Option" && e.call.params) conditions_.option(e.call.category, *e.call.params);
-      else if (r == "Attribute" && e.call.params) conditions_.attribute(e.call.category, *e.call.params);
-      else track_block(r);
+      e.call.call(condition_tracker);
     } catch (const RibError& err) {
       diag_.error(e.call.loc, e.call.request, err.what());
     }

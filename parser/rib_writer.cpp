@@ -1,6 +1,7 @@
 #include "parser/rib_writer.h"
 
 #include "parser/primitive_signatures.h"
+#include "parser/ri_request_macros.h"
 
 #include <charconv>
 #include <type_traits>
@@ -37,6 +38,18 @@ std::string bracketed(const Range& values) {
   return s + "]";
 }
 
+// One fixed argument, by its kind (parser/ri_arg_kinds.h), with the space before it.
+void write_arg(std::ostream& out, RiInt, int v) { out << ' ' << v; }
+void write_arg(std::ostream& out, RiFloat, double v) { out << ' ' << rib_number(v); }
+template <int N>
+void write_arg(std::ostream& out, RiNumbers<N>, double v) { out << ' ' << rib_number(v); }
+void write_arg(std::ostream& out, RiNumbersNext, double v) { out << ' ' << rib_number(v); }
+void write_arg(std::ostream& out, RiBool, bool v) { out << ' ' << (v ? 1 : 0); }
+void write_arg(std::ostream& out, RiString, const std::string& v) { out << ' ' << rib_string(v); }
+void write_arg(std::ostream& out, RiMatrix, const std::array<double, 16>& v) { out << ' ' << bracketed(v); }
+void write_arg(std::ostream& out, RiColor, const std::array<float, 3>& v) { out << ' ' << bracketed(v); }
+void write_arg(std::ostream& out, RiIntArray, const std::vector<int>& v) { out << ' ' << bracketed(v); }
+
 // A handle that was written as an integer is written back as one.
 std::string rib_handle(const std::string& handle) {
   const bool integer = !handle.empty() && handle.size() < 10 &&
@@ -45,7 +58,11 @@ std::string rib_handle(const std::string& handle) {
   return integer ? handle : rib_string(handle);
 }
 
-std::string rib_basis(const BasisArg& b) { return b.name.empty() ? bracketed(b.matrix) : rib_string(b.name); }
+void write_arg(std::ostream& out, RiHandle, const std::string& v) { out << ' ' << rib_handle(v); }
+
+void write_arg(std::ostream& out, RiBasis, const BasisArg& b) {
+  out << ' ' << (b.name.empty() ? bracketed(b.matrix) : rib_string(b.name));
+}
 
 }  // namespace
 
@@ -83,14 +100,11 @@ std::ostream& RibWriter::begin_line(const char* request) {
   return out_;
 }
 
-void RibWriter::open_block(const char* request) {
-  begin_line(request) << '\n';
-  ++depth_;
-}
-
-void RibWriter::close_block(const char* request) {
-  if (depth_ > 0) --depth_;
-  begin_line(request) << '\n';
+std::ostream& RibWriter::begin_request(const char* request, RequestShape shape) {
+  if (shape == RequestShape::close && depth_ > 0) --depth_;
+  std::ostream& out = begin_line(request);
+  if (shape == RequestShape::open) ++depth_;
+  return out;
 }
 
 void RibWriter::write_params(const ParamList& params) {
@@ -105,72 +119,30 @@ void RibWriter::write_params(const ParamList& params) {
   out_ << '\n';
 }
 
-void RibWriter::version(double v, const SourceLoc&) { begin_line("version") << ' ' << rib_number(v) << '\n'; }
+// Every request of parser/ri_requests.def but the special ones: its name, its arguments by kind,
+// its parameter list, one line.
+#define DARC_RI_ON_ARG(Kind, name, what) write_arg(out, Kind{}, name);
+#define DARC_RI_REQUEST(Rib, method, reading, shape, args)                      \
+  DARC_RI_IF_GENERIC_##reading(                                                 \
+      void RibWriter::method(DARC_RI_PARAMS(args) const SourceLoc&) {           \
+        [[maybe_unused]] std::ostream& out = begin_request(#Rib, RequestShape::shape); \
+        DARC_RI_EACH(args)                                                      \
+        out << '\n';                                                            \
+      })
+#define DARC_RI_REQUEST_PL(Rib, method, reading, shape, args)                   \
+  DARC_RI_IF_GENERIC_##reading(                                                 \
+      void RibWriter::method(DARC_RI_PARAMS(args) const ParamList& params,      \
+                             const SourceLoc&) {                                \
+        [[maybe_unused]] std::ostream& out = begin_request(#Rib, RequestShape::shape); \
+        DARC_RI_EACH(args)                                                      \
+        write_params(params);                                                   \
+      })
+#include "parser/ri_requests.def"
+#undef DARC_RI_REQUEST
+#undef DARC_RI_REQUEST_PL
+#undef DARC_RI_ON_ARG
 
-void RibWriter::declare(const std::string& name, const std::string& declaration, const SourceLoc&) {
-  begin_line("Declare") << ' ' << rib_string(name) << ' ' << rib_string(declaration) << '\n';
-}
-
-void RibWriter::option(const std::string& category, const ParamList& params, const SourceLoc&) {
-  begin_line("Option") << ' ' << rib_string(category);
-  write_params(params);
-}
-
-void RibWriter::format(int xres, int yres, double pixel_aspect, const SourceLoc&) {
-  begin_line("Format") << ' ' << xres << ' ' << yres << ' ' << rib_number(pixel_aspect) << '\n';
-}
-
-void RibWriter::frame_aspect_ratio(double ratio, const SourceLoc&) {
-  begin_line("FrameAspectRatio") << ' ' << rib_number(ratio) << '\n';
-}
-
-void RibWriter::screen_window(double left, double right, double bottom, double top, const SourceLoc&) {
-  begin_line("ScreenWindow") << ' ' << rib_number(left) << ' ' << rib_number(right) << ' ' << rib_number(bottom) << ' '
-                             << rib_number(top) << '\n';
-}
-
-void RibWriter::crop_window(double xmin, double xmax, double ymin, double ymax, const SourceLoc&) {
-  begin_line("CropWindow") << ' ' << rib_number(xmin) << ' ' << rib_number(xmax) << ' ' << rib_number(ymin) << ' '
-                           << rib_number(ymax) << '\n';
-}
-
-void RibWriter::projection(const std::string& name, const ParamList& params, const SourceLoc&) {
-  begin_line("Projection") << ' ' << rib_string(name);
-  write_params(params);
-}
-
-void RibWriter::clipping(double near_plane, double far_plane, const SourceLoc&) {
-  begin_line("Clipping") << ' ' << rib_number(near_plane) << ' ' << rib_number(far_plane) << '\n';
-}
-
-void RibWriter::pixel_samples(double xs, double ys, const SourceLoc&) {
-  begin_line("PixelSamples") << ' ' << rib_number(xs) << ' ' << rib_number(ys) << '\n';
-}
-
-void RibWriter::pixel_filter(const std::string& name, double xwidth, double ywidth, const SourceLoc&) {
-  begin_line("PixelFilter") << ' ' << rib_string(name) << ' ' << rib_number(xwidth) << ' ' << rib_number(ywidth)
-                            << '\n';
-}
-
-void RibWriter::exposure(double gain, double gamma, const SourceLoc&) {
-  begin_line("Exposure") << ' ' << rib_number(gain) << ' ' << rib_number(gamma) << '\n';
-}
-
-void RibWriter::quantize(const std::string& type, int one, int qmin, int qmax, double dither, const SourceLoc&) {
-  begin_line("Quantize") << ' ' << rib_string(type) << ' ' << one << ' ' << qmin << ' ' << qmax << ' '
-                         << rib_number(dither) << '\n';
-}
-
-void RibWriter::display(const std::string& name, const std::string& type, const std::string& mode,
-                        const ParamList& params, const SourceLoc&) {
-  begin_line("Display") << ' ' << rib_string(name) << ' ' << rib_string(type) << ' ' << rib_string(mode);
-  write_params(params);
-}
-
-void RibWriter::hider(const std::string& type, const ParamList& params, const SourceLoc&) {
-  begin_line("Hider") << ' ' << rib_string(type);
-  write_params(params);
-}
+// --- the special rows ---
 
 void RibWriter::ignored_request(const std::string& request, const std::vector<double>& numbers,
                                 const std::vector<std::string>& strings, const SourceLoc&) {
@@ -179,147 +151,6 @@ void RibWriter::ignored_request(const std::string& request, const std::vector<do
   for (const std::string& s : strings) line << ' ' << rib_string(s);
   for (double v : numbers) line << ' ' << rib_number(v);
   line << '\n';
-}
-
-void RibWriter::frame_begin(int number, const SourceLoc&) {
-  begin_line("FrameBegin") << ' ' << number << '\n';
-  ++depth_;
-}
-void RibWriter::frame_end(const SourceLoc&) { close_block("FrameEnd"); }
-void RibWriter::world_begin(const SourceLoc&) { open_block("WorldBegin"); }
-void RibWriter::world_end(const SourceLoc&) { close_block("WorldEnd"); }
-void RibWriter::attribute_begin(const SourceLoc&) { open_block("AttributeBegin"); }
-void RibWriter::attribute_end(const SourceLoc&) { close_block("AttributeEnd"); }
-void RibWriter::transform_begin(const SourceLoc&) { open_block("TransformBegin"); }
-void RibWriter::transform_end(const SourceLoc&) { close_block("TransformEnd"); }
-
-void RibWriter::identity(const SourceLoc&) { begin_line("Identity") << '\n'; }
-
-void RibWriter::transform(const std::array<double, 16>& m, const SourceLoc&) {
-  begin_line("Transform") << ' ' << bracketed(m) << '\n';
-}
-
-void RibWriter::concat_transform(const std::array<double, 16>& m, const SourceLoc&) {
-  begin_line("ConcatTransform") << ' ' << bracketed(m) << '\n';
-}
-
-void RibWriter::translate(double dx, double dy, double dz, const SourceLoc&) {
-  begin_line("Translate") << ' ' << rib_number(dx) << ' ' << rib_number(dy) << ' ' << rib_number(dz) << '\n';
-}
-
-void RibWriter::rotate(double angle_degrees, double ax, double ay, double az, const SourceLoc&) {
-  begin_line("Rotate") << ' ' << rib_number(angle_degrees) << ' ' << rib_number(ax) << ' ' << rib_number(ay) << ' '
-                       << rib_number(az) << '\n';
-}
-
-void RibWriter::scale(double sx, double sy, double sz, const SourceLoc&) {
-  begin_line("Scale") << ' ' << rib_number(sx) << ' ' << rib_number(sy) << ' ' << rib_number(sz) << '\n';
-}
-
-void RibWriter::perspective(double fov_degrees, const SourceLoc&) {
-  begin_line("Perspective") << ' ' << rib_number(fov_degrees) << '\n';
-}
-
-void RibWriter::coordinate_system(const std::string& name, const SourceLoc&) {
-  begin_line("CoordinateSystem") << ' ' << rib_string(name) << '\n';
-}
-
-void RibWriter::coord_sys_transform(const std::string& name, const SourceLoc&) {
-  begin_line("CoordSysTransform") << ' ' << rib_string(name) << '\n';
-}
-
-void RibWriter::attribute(const std::string& category, const ParamList& params, const SourceLoc&) {
-  begin_line("Attribute") << ' ' << rib_string(category);
-  write_params(params);
-}
-
-void RibWriter::orientation(const std::string& name, const SourceLoc&) {
-  begin_line("Orientation") << ' ' << rib_string(name) << '\n';
-}
-
-void RibWriter::reverse_orientation(const SourceLoc&) { begin_line("ReverseOrientation") << '\n'; }
-
-void RibWriter::sides(int n, const SourceLoc&) { begin_line("Sides") << ' ' << n << '\n'; }
-
-void RibWriter::color(const std::array<float, 3>& rgb, const SourceLoc&) {
-  begin_line("Color") << ' ' << bracketed(rgb) << '\n';
-}
-
-void RibWriter::opacity(const std::array<float, 3>& rgb, const SourceLoc&) {
-  begin_line("Opacity") << ' ' << bracketed(rgb) << '\n';
-}
-
-void RibWriter::surface(const std::string& name, const ParamList& params, const SourceLoc&) {
-  begin_line("Surface") << ' ' << rib_string(name);
-  write_params(params);
-}
-
-void RibWriter::displacement(const std::string& name, const ParamList& params, const SourceLoc&) {
-  begin_line("Displacement") << ' ' << rib_string(name);
-  write_params(params);
-}
-
-void RibWriter::light_source(const std::string& name, const std::string& handle, const ParamList& params,
-                             const SourceLoc&) {
-  begin_line("LightSource") << ' ' << rib_string(name) << ' ' << rib_handle(handle);
-  write_params(params);
-}
-
-void RibWriter::area_light_source(const std::string& name, const std::string& handle, const ParamList& params,
-                                  const SourceLoc&) {
-  begin_line("AreaLightSource") << ' ' << rib_string(name) << ' ' << rib_handle(handle);
-  write_params(params);
-}
-
-void RibWriter::illuminate(const std::string& handle, bool on, const SourceLoc&) {
-  begin_line("Illuminate") << ' ' << rib_handle(handle) << ' ' << (on ? 1 : 0) << '\n';
-}
-
-void RibWriter::basis(const BasisArg& ubasis, int ustep, const BasisArg& vbasis, int vstep, const SourceLoc&) {
-  begin_line("Basis") << ' ' << rib_basis(ubasis) << ' ' << ustep << ' ' << rib_basis(vbasis) << ' ' << vstep << '\n';
-}
-
-// --- RenderMan 21+ (RIS): "Request" "plugin" "handle" params ---
-
-void RibWriter::ris_node(const char* request, const std::string& name, const std::string& handle,
-                         const ParamList& params) {
-  begin_line(request) << ' ' << rib_string(name) << ' ' << rib_handle(handle);
-  write_params(params);
-}
-
-void RibWriter::bxdf(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc&) {
-  ris_node("Bxdf", name, handle, params);
-}
-
-void RibWriter::light(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc&) {
-  ris_node("Light", name, handle, params);
-}
-
-void RibWriter::pattern(const std::string& name, const std::string& handle, const ParamList& params,
-                        const SourceLoc&) {
-  ris_node("Pattern", name, handle, params);
-}
-
-void RibWriter::integrator(const std::string& name, const std::string& handle, const ParamList& params,
-                           const SourceLoc&) {
-  ris_node("Integrator", name, handle, params);
-}
-
-void RibWriter::object_begin(const std::string& handle, const SourceLoc&) {
-  begin_line("ObjectBegin") << ' ' << rib_handle(handle) << '\n';
-  ++depth_;
-}
-
-void RibWriter::object_end(const SourceLoc&) { close_block("ObjectEnd"); }
-
-void RibWriter::object_instance(const std::string& handle, const SourceLoc&) {
-  begin_line("ObjectInstance") << ' ' << rib_handle(handle) << '\n';
-}
-
-void RibWriter::curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
-                       const ParamList& params, const SourceLoc&) {
-  begin_line("Curves") << ' ' << rib_string(type) << ' ' << bracketed(nvertices) << ' ' << rib_string(wrap);
-  write_params(params);
 }
 
 void RibWriter::primitive(const PrimitiveRequest& r, const ParamList& params, const SourceLoc&) {
@@ -351,28 +182,7 @@ void RibWriter::primitive(const PrimitiveRequest& r, const ParamList& params, co
   write_params(params);
 }
 
-void RibWriter::polygon(const ParamList& params, const SourceLoc&) {
-  begin_line("Polygon");
-  write_params(params);
-}
-
-void RibWriter::general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params, const SourceLoc&) {
-  begin_line("GeneralPolygon") << ' ' << bracketed(nverts_per_loop);
-  write_params(params);
-}
-
-void RibWriter::points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,
-                                const ParamList& params, const SourceLoc&) {
-  begin_line("PointsPolygons") << ' ' << bracketed(nverts_per_face) << ' ' << bracketed(indices);
-  write_params(params);
-}
-
-void RibWriter::points_general_polygons(const std::vector<int>& nloops_per_face,
-                                        const std::vector<int>& nverts_per_loop, const std::vector<int>& indices,
-                                        const ParamList& params, const SourceLoc&) {
-  begin_line("PointsGeneralPolygons") << ' ' << bracketed(nloops_per_face) << ' ' << bracketed(nverts_per_loop) << ' '
-                                      << bracketed(indices);
-  write_params(params);
-}
+// Not written: the parser has already warned, and its arguments are gone.
+void RibWriter::skipped_primitive(const std::string&, const SourceLoc&) {}
 
 }  // namespace darc

@@ -45,131 +45,33 @@ class RecordingTarget : public RiTarget {
     return out;
   }
 
-  void version(double v, const SourceLoc& loc) override { add("version", {v}, {}, {}, loc); }
-  void declare(const std::string& name, const std::string& decl, const SourceLoc& loc) override {
-    add("Declare", {}, {name, decl}, {}, loc);
-  }
-  void option(const std::string& c, const ParamList& p, const SourceLoc& loc) override {
-    add("Option", {}, {c}, p, loc);
-  }
-  void format(int x, int y, double a, const SourceLoc& loc) override {
-    add("Format", {double(x), double(y), a}, {}, {}, loc);
-  }
-  void frame_aspect_ratio(double r, const SourceLoc& loc) override { add("FrameAspectRatio", {r}, {}, {}, loc); }
-  void screen_window(double l, double r, double b, double t, const SourceLoc& loc) override {
-    add("ScreenWindow", {l, r, b, t}, {}, {}, loc);
-  }
-  void crop_window(double a, double b, double c, double d, const SourceLoc& loc) override {
-    add("CropWindow", {a, b, c, d}, {}, {}, loc);
-  }
-  void projection(const std::string& n, const ParamList& p, const SourceLoc& loc) override {
-    add("Projection", {}, {n}, p, loc);
-  }
-  void clipping(double n, double f, const SourceLoc& loc) override { add("Clipping", {n, f}, {}, {}, loc); }
-  void pixel_samples(double x, double y, const SourceLoc& loc) override { add("PixelSamples", {x, y}, {}, {}, loc); }
-  void pixel_filter(const std::string& n, double x, double y, const SourceLoc& loc) override {
-    add("PixelFilter", {x, y}, {n}, {}, loc);
-  }
-  void exposure(double g, double y, const SourceLoc& loc) override { add("Exposure", {g, y}, {}, {}, loc); }
-  void quantize(const std::string& t, int one, int lo, int hi, double d, const SourceLoc& loc) override {
-    add("Quantize", {double(one), double(lo), double(hi), d}, {t}, {}, loc);
-  }
-  void display(const std::string& n, const std::string& t, const std::string& m, const ParamList& p,
-               const SourceLoc& loc) override {
-    add("Display", {}, {n, t, m}, p, loc);
-  }
-  void hider(const std::string& t, const ParamList& p, const SourceLoc& loc) override { add("Hider", {}, {t}, p, loc); }
+  // Every request of parser/ri_requests.def but the special ones: its arguments flattened by
+  // kind in order (numbers to `numbers`, strings and handles to `strings`, a Basis as its name
+  // and its 16 numbers, -1 between consecutive integer arrays).
+#define DARC_RI_ON_ARG(Kind, name, what) flatten(call, Kind{}, name);
+#define DARC_RI_REQUEST(Rib, method, reading, shape, args)                         \
+  DARC_RI_IF_GENERIC_##reading(void method(DARC_RI_PARAMS(args) const SourceLoc& loc) override { \
+    RecordedCall call{#Rib, {}, {}, {}, loc};                                      \
+    int_arrays_in_call_ = 0;                                                       \
+    DARC_RI_EACH(args)                                                             \
+    calls.push_back(std::move(call));                                              \
+  })
+#define DARC_RI_REQUEST_PL(Rib, method, reading, shape, args)                                         \
+  DARC_RI_IF_GENERIC_##reading(                                                                       \
+      void method(DARC_RI_PARAMS(args) const ParamList& params, const SourceLoc& loc) override { \
+        RecordedCall call{#Rib, {}, {}, params, loc};                                                 \
+        int_arrays_in_call_ = 0;                                                                      \
+        DARC_RI_EACH(args)                                                                            \
+        calls.push_back(std::move(call));                                                             \
+      })
+#include "parser/ri_requests.def"
+#undef DARC_RI_REQUEST
+#undef DARC_RI_REQUEST_PL
+#undef DARC_RI_ON_ARG
+
   void ignored_request(const std::string& r, const std::vector<double>& n, const std::vector<std::string>& s,
                        const SourceLoc& loc) override {
-    add(r, n, s, {}, loc);
-  }
-
-  void frame_begin(int n, const SourceLoc& loc) override { add("FrameBegin", {double(n)}, {}, {}, loc); }
-  void frame_end(const SourceLoc& loc) override { add("FrameEnd", {}, {}, {}, loc); }
-  void world_begin(const SourceLoc& loc) override { add("WorldBegin", {}, {}, {}, loc); }
-  void world_end(const SourceLoc& loc) override { add("WorldEnd", {}, {}, {}, loc); }
-  void attribute_begin(const SourceLoc& loc) override { add("AttributeBegin", {}, {}, {}, loc); }
-  void attribute_end(const SourceLoc& loc) override { add("AttributeEnd", {}, {}, {}, loc); }
-  void transform_begin(const SourceLoc& loc) override { add("TransformBegin", {}, {}, {}, loc); }
-  void transform_end(const SourceLoc& loc) override { add("TransformEnd", {}, {}, {}, loc); }
-
-  void identity(const SourceLoc& loc) override { add("Identity", {}, {}, {}, loc); }
-  void transform(const std::array<double, 16>& m, const SourceLoc& loc) override {
-    add("Transform", {m.begin(), m.end()}, {}, {}, loc);
-  }
-  void concat_transform(const std::array<double, 16>& m, const SourceLoc& loc) override {
-    add("ConcatTransform", {m.begin(), m.end()}, {}, {}, loc);
-  }
-  void translate(double x, double y, double z, const SourceLoc& loc) override {
-    add("Translate", {x, y, z}, {}, {}, loc);
-  }
-  void rotate(double a, double x, double y, double z, const SourceLoc& loc) override {
-    add("Rotate", {a, x, y, z}, {}, {}, loc);
-  }
-  void scale(double x, double y, double z, const SourceLoc& loc) override { add("Scale", {x, y, z}, {}, {}, loc); }
-  void perspective(double f, const SourceLoc& loc) override { add("Perspective", {f}, {}, {}, loc); }
-  void coordinate_system(const std::string& n, const SourceLoc& loc) override {
-    add("CoordinateSystem", {}, {n}, {}, loc);
-  }
-  void coord_sys_transform(const std::string& n, const SourceLoc& loc) override {
-    add("CoordSysTransform", {}, {n}, {}, loc);
-  }
-
-  void attribute(const std::string& c, const ParamList& p, const SourceLoc& loc) override {
-    add("Attribute", {}, {c}, p, loc);
-  }
-  void orientation(const std::string& n, const SourceLoc& loc) override { add("Orientation", {}, {n}, {}, loc); }
-  void reverse_orientation(const SourceLoc& loc) override { add("ReverseOrientation", {}, {}, {}, loc); }
-  void sides(int n, const SourceLoc& loc) override { add("Sides", {double(n)}, {}, {}, loc); }
-  void color(const std::array<float, 3>& c, const SourceLoc& loc) override {
-    add("Color", {c[0], c[1], c[2]}, {}, {}, loc);
-  }
-  void opacity(const std::array<float, 3>& c, const SourceLoc& loc) override {
-    add("Opacity", {c[0], c[1], c[2]}, {}, {}, loc);
-  }
-  void surface(const std::string& n, const ParamList& p, const SourceLoc& loc) override {
-    add("Surface", {}, {n}, p, loc);
-  }
-  void displacement(const std::string& n, const ParamList& p, const SourceLoc& loc) override {
-    add("Displacement", {}, {n}, p, loc);
-  }
-  void light_source(const std::string& n, const std::string& h, const ParamList& p, const SourceLoc& loc) override {
-    add("LightSource", {}, {n, h}, p, loc);
-  }
-  void bxdf(const std::string& n, const std::string& h, const ParamList& p, const SourceLoc& loc) override {
-    add("Bxdf", {}, {n, h}, p, loc);
-  }
-  void light(const std::string& n, const std::string& h, const ParamList& p, const SourceLoc& loc) override {
-    add("Light", {}, {n, h}, p, loc);
-  }
-  void pattern(const std::string& n, const std::string& h, const ParamList& p, const SourceLoc& loc) override {
-    add("Pattern", {}, {n, h}, p, loc);
-  }
-  void integrator(const std::string& n, const std::string& h, const ParamList& p, const SourceLoc& loc) override {
-    add("Integrator", {}, {n, h}, p, loc);
-  }
-  void area_light_source(const std::string& n, const std::string& h, const ParamList& p,
-                         const SourceLoc& loc) override {
-    add("AreaLightSource", {}, {n, h}, p, loc);
-  }
-  void illuminate(const std::string& h, bool on, const SourceLoc& loc) override {
-    add("Illuminate", {on ? 1.0 : 0.0}, {h}, {}, loc);
-  }
-  void basis(const BasisArg& u, int us, const BasisArg& v, int vs, const SourceLoc& loc) override {
-    std::vector<double> n(u.matrix.begin(), u.matrix.end());
-    n.push_back(us);
-    n.insert(n.end(), v.matrix.begin(), v.matrix.end());
-    n.push_back(vs);
-    add("Basis", n, {u.name, v.name}, {}, loc);
-  }
-
-  void object_begin(const std::string& h, const SourceLoc& loc) override { add("ObjectBegin", {}, {h}, {}, loc); }
-  void object_end(const SourceLoc& loc) override { add("ObjectEnd", {}, {}, {}, loc); }
-  void object_instance(const std::string& h, const SourceLoc& loc) override { add("ObjectInstance", {}, {h}, {}, loc); }
-
-  void curves(const std::string& type, const std::vector<int>& nv, const std::string& wrap, const ParamList& p,
-              const SourceLoc& loc) override {
-    add("Curves", {nv.begin(), nv.end()}, {type, wrap}, p, loc);
+    calls.push_back({r, n, s, {}, loc});
   }
   // Numbers, then every array's values in order; strings, then every string array's.
   void primitive(const PrimitiveRequest& r, const ParamList& p, const SourceLoc& loc) override {
@@ -178,37 +80,36 @@ class RecordingTarget : public RiTarget {
     for (const auto& a : r.number_arrays) n.insert(n.end(), a.begin(), a.end());
     std::vector<std::string> s = r.strings;
     for (const auto& a : r.string_arrays) s.insert(s.end(), a.begin(), a.end());
-    add(r.name, n, s, p, loc);
-  }
-  void polygon(const ParamList& p, const SourceLoc& loc) override { add("Polygon", {}, {}, p, loc); }
-  void general_polygon(const std::vector<int>& nv, const ParamList& p, const SourceLoc& loc) override {
-    add("GeneralPolygon", {nv.begin(), nv.end()}, {}, p, loc);
-  }
-  void points_polygons(const std::vector<int>& nv, const std::vector<int>& idx, const ParamList& p,
-                       const SourceLoc& loc) override {
-    std::vector<double> n(nv.begin(), nv.end());
-    n.push_back(-1);  // separator
-    n.insert(n.end(), idx.begin(), idx.end());
-    add("PointsPolygons", n, {}, p, loc);
-  }
-  void points_general_polygons(const std::vector<int>& nl, const std::vector<int>& nv, const std::vector<int>& idx,
-                               const ParamList& p, const SourceLoc& loc) override {
-    std::vector<double> n(nl.begin(), nl.end());
-    n.push_back(-1);
-    n.insert(n.end(), nv.begin(), nv.end());
-    n.push_back(-1);
-    n.insert(n.end(), idx.begin(), idx.end());
-    add("PointsGeneralPolygons", n, {}, p, loc);
+    calls.push_back({r.name, n, s, p, loc});
   }
   // Kept apart from `calls`: they are not requests the target models.
   std::vector<std::string> skipped_primitives;
   void skipped_primitive(const std::string& r, const SourceLoc&) override { skipped_primitives.push_back(r); }
 
  private:
-  void add(const std::string& request, std::vector<double> numbers, std::vector<std::string> strings,
-           const ParamList& params, const SourceLoc& loc) {
-    calls.push_back({request, std::move(numbers), std::move(strings), params, loc});
+  static void flatten(RecordedCall& c, RiInt, int v) { c.numbers.push_back(v); }
+  static void flatten(RecordedCall& c, RiFloat, double v) { c.numbers.push_back(v); }
+  template <int N>
+  static void flatten(RecordedCall& c, RiNumbers<N>, double v) { c.numbers.push_back(v); }
+  static void flatten(RecordedCall& c, RiNumbersNext, double v) { c.numbers.push_back(v); }
+  static void flatten(RecordedCall& c, RiBool, bool v) { c.numbers.push_back(v ? 1.0 : 0.0); }
+  static void flatten(RecordedCall& c, RiString, const std::string& v) { c.strings.push_back(v); }
+  static void flatten(RecordedCall& c, RiHandle, const std::string& v) { c.strings.push_back(v); }
+  static void flatten(RecordedCall& c, RiMatrix, const std::array<double, 16>& v) {
+    c.numbers.insert(c.numbers.end(), v.begin(), v.end());
   }
+  static void flatten(RecordedCall& c, RiColor, const std::array<float, 3>& v) {
+    c.numbers.insert(c.numbers.end(), v.begin(), v.end());
+  }
+  static void flatten(RecordedCall& c, RiBasis, const BasisArg& v) {
+    c.strings.push_back(v.name);
+    c.numbers.insert(c.numbers.end(), v.matrix.begin(), v.matrix.end());
+  }
+  void flatten(RecordedCall& c, RiIntArray, const std::vector<int>& v) {
+    if (int_arrays_in_call_++ > 0) c.numbers.push_back(-1);  // separator
+    c.numbers.insert(c.numbers.end(), v.begin(), v.end());
+  }
+  int int_arrays_in_call_ = 0;  // of the call being recorded
 };
 
 // The outcome of parsing a text with a RecordingTarget and silent Diagnostics.
