@@ -6,9 +6,9 @@
 
 #include "app/progress_reporter.h"
 #include "app/stats_file.h"
-#include "core/acceleration_reuse.h"
-#include "core/frame_memory.h"
-#include "core/scene_builder.h"
+#include "core/scene/acceleration_reuse.h"
+#include "core/scene/frame_memory.h"
+#include "core/scene/builder/scene_builder.h"
 #include "integrator/color_config.h"
 #include "integrator/image_writer.h"
 #include "integrator/render_frame.h"

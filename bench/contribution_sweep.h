@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "bench/image_error.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "integrator/film.h"
 #include "integrator/render_frame.h"
 #include "integrator/render_stats.h"

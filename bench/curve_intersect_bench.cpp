@@ -6,9 +6,9 @@
 #include <cmath>
 #include <random>
 
-#include "core/curve_builder.h"
-#include "core/curve_distance_intersector.h"
-#include "core/curve_intersector.h"
+#include "core/geometry/curves/curve_builder.h"
+#include "core/geometry/curves/curve_distance_intersector.h"
+#include "core/geometry/curves/curve_intersector.h"
 
 namespace darc {
 namespace {

@@ -34,7 +34,7 @@ T bezier(const T* c, float u) {
 }
 
 // Unit dC/du of a cubic Bézier, else its chord (coincident control points), else any direction
-// perpendicular to the ray: the same fallbacks as core/curve_intersector.cpp.
+// perpendicular to the ray: the same fallbacks as core/geometry/curves/curve_intersector.cpp.
 Vec3f curve_tangent(const Vec3f* cp, float u, const Vec3f& dir) {
   float s = 1 - u;
   Vec3f d = (cp[1] - cp[0]) * (3 * s * s) + (cp[2] - cp[1]) * (6 * s * u) + (cp[3] - cp[2]) * (3 * u * u);
@@ -91,7 +91,7 @@ std::optional<std::pair<ShadingPoint, uint32_t>> shading_point(const RenderConte
           g.kind == EmbreeGeometry::Kind::PolygonTriangles ? uint32_t(surfaces.spheres.size()) + i : i;
       material = surfaces.material(surface);
       const Material& m = ctx.scene.materials[material];
-      // darc's own normals, as core/interaction.cpp builds them (not the triangle's winding).
+      // darc's own normals, as core/scene/interaction.cpp builds them (not the triangle's winding).
       const Vec3f ng = surfaces.geometric_normal(surface, sp.P);
       if (m.hides_back_of(ng, ray.d)) return std::nullopt;
       const Vec3f ns = surfaces.shading_normal(surface, sp.P);

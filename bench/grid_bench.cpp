@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-#include "core/uniform_grid.h"
+#include "core/accel/uniform_grid.h"
 
 namespace darc {
 namespace {

@@ -2,7 +2,7 @@
 // parse (SceneBuilder's CurveSet), and each acceleration structure (the BVH darc renders with,
 // and the uniform grid), as the C heap's growth (glibc's exact count) and the resident set's
 // peak during each step (VmHWM reset before it where the kernel allows). The figures are what
-// SceneBuilder's memory limit (core/frame_memory.h) estimates a frame from.
+// SceneBuilder's memory limit (core/scene/frame_memory.h) estimates a frame from.
 //
 //   memory_per_segment [--segments N] [--text-out FILE]
 #include <cinttypes>
@@ -15,8 +15,8 @@
 #include <string>
 
 #include "bench/process_memory.h"
-#include "core/frame_memory.h"
-#include "core/scene_builder.h"
+#include "core/scene/frame_memory.h"
+#include "core/scene/builder/scene_builder.h"
 #include "parser/rib_parser.h"
 
 namespace {
@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
     std::printf("| %s | %.1f | %.0f | %.0f | %.1f | %.0f |\n", b.name, mb(b.heap_growth), per(b.heap_growth, n),
                 per(b.own_bytes, n), mb(b.peak_growth), per(b.peak_growth, n));
   const double estimate = double(frame_memory_estimate(n, 0, 0));
-  std::printf("\nSceneBuilder's estimate of the frame (core/frame_memory.h): %.1f MB, %.0f B/segment; "
+  std::printf("\nSceneBuilder's estimate of the frame (core/scene/frame_memory.h): %.1f MB, %.0f B/segment; "
               "measured CurveSet + BVH after the build %.0f B/segment, peak during the BVH build %.0f B/segment "
               "over the CurveSet\n",
               mb(uint64_t(estimate)), estimate / double(n), per(curve_bytes + bvh.own_bytes, n),

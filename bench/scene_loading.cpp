@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "bench/process_memory.h"
-#include "core/scene_builder.h"
+#include "core/scene/builder/scene_builder.h"
 #include "parser/rib_parser.h"
 
 namespace darc::bench {

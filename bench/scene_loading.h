@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace darc::bench {
 

@@ -3,7 +3,7 @@
 // counters of the first run kept (renders are deterministic, so every run gives the same).
 #pragma once
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "integrator/film.h"
 #include "integrator/render_frame.h"
 #include "integrator/render_stats.h"

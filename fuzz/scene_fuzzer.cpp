@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "core/scene.h"
-#include "core/scene_builder.h"
+#include "core/scene/scene.h"
+#include "core/scene/builder/scene_builder.h"
 #include "parser/diagnostics.h"
 #include "parser/rib_parser.h"
 

@@ -3,9 +3,9 @@
 // once they are final (no later traversal step can put anything in front of them).
 #pragma once
 
-#include "core/coverage_mask.h"
-#include "core/curve_set.h"
-#include "core/vec.h"
+#include "core/footprint/coverage_mask.h"
+#include "core/geometry/curves/curve_set.h"
+#include "core/math/vec.h"
 
 #include <algorithm>
 #include <array>

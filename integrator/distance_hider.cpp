@@ -1,9 +1,9 @@
 #include "integrator/distance_hider.h"
 
-#include "core/curve_basis.h"
-#include "core/interaction.h"
-#include "core/point_set_coverage.h"
-#include "core/ray_differentials.h"
+#include "core/math/curve_basis.h"
+#include "core/scene/interaction.h"
+#include "core/geometry/points/point_set_coverage.h"
+#include "core/scene/ray_differentials.h"
 
 #include <cmath>
 #include <limits>

@@ -6,15 +6,15 @@
 // --pixel-samples N also antialiases their edges.
 #pragma once
 
-#include "core/coverage.h"
-#include "core/curve_distance_intersector.h"
+#include "core/footprint/coverage.h"
+#include "core/geometry/curves/curve_distance_intersector.h"
 #include "integrator/abuffer.h"
 #include "integrator/hit_filter.h"
 #include "integrator/ray_scratch.h"
 #include "integrator/secondary_rays.h"
-#include "core/bbox.h"
-#include "core/coverage_mask.h"
-#include "core/surface_hit.h"
+#include "core/math/bbox.h"
+#include "core/footprint/coverage_mask.h"
+#include "core/geometry/surfaces/surface_hit.h"
 #include "integrator/stochastic_hider.h"
 
 #include <limits>

@@ -2,9 +2,9 @@
 // through its Transmission attribute instead of its opacity alone).
 #pragma once
 
-#include "core/curve_set.h"
-#include "core/interaction.h"
-#include "core/scene.h"
+#include "core/geometry/curves/curve_set.h"
+#include "core/scene/interaction.h"
+#include "core/scene/scene.h"
 
 #include <cstdint>
 #include <limits>

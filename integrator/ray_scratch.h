@@ -3,7 +3,7 @@
 // reflection ray) uses the next level. Levels are made on first use and kept for the tile.
 #pragma once
 
-#include "core/accelerator.h"
+#include "core/accel/accelerator.h"
 #include "integrator/abuffer.h"
 
 #include <deque>

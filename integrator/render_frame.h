@@ -3,8 +3,8 @@
 // thread count.
 #pragma once
 
-#include "core/scene.h"
-#include "core/coverage.h"
+#include "core/scene/scene.h"
+#include "core/footprint/coverage.h"
 #include "integrator/contribution.h"
 #include "integrator/distance_hider.h"
 #include "integrator/film.h"

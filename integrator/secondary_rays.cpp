@@ -1,6 +1,6 @@
 #include "integrator/secondary_rays.h"
 
-#include "core/ray_differentials.h"
+#include "core/scene/ray_differentials.h"
 
 namespace darc {
 

@@ -4,8 +4,8 @@
 // hider is how a ray is traced: SecondaryRayTracer.
 #pragma once
 
-#include "core/interaction.h"
-#include "core/ray_footprint.h"
+#include "core/scene/interaction.h"
+#include "core/footprint/ray_footprint.h"
 #include "integrator/render_stats.h"
 #include "shading/scene_shading.h"
 

@@ -4,7 +4,7 @@
 // distance-aware hider is measured against.
 #pragma once
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "integrator/film.h"
 #include "integrator/hit_filter.h"
 #include "integrator/ray_scratch.h"

@@ -1,6 +1,6 @@
 #include "integrator/tracer.h"
 
-#include "core/curve_intersector.h"
+#include "core/geometry/curves/curve_intersector.h"
 
 namespace darc {
 

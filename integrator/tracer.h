@@ -2,8 +2,8 @@
 // structure's nearest-hit query, with exact hit/miss tests: the visibility query of the stochastic hider.
 #pragma once
 
-#include "core/interaction.h"
-#include "core/scene.h"
+#include "core/scene/interaction.h"
+#include "core/scene/scene.h"
 #include "integrator/hit_filter.h"
 #include "integrator/render_stats.h"
 

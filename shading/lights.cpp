@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/shader_parameter_checks.h"
+#include "core/scene/builder/shader_parameter_checks.h"
 
 namespace darc {
 

@@ -1,8 +1,8 @@
 // The standard RI light shaders (RI Spec 3.2 Appendix A), evaluated in world space.
 #pragma once
 
-#include "core/scene.h"
-#include "core/vec.h"
+#include "core/scene/scene.h"
+#include "core/math/vec.h"
 #include "parser/diagnostics.h"
 
 #include <memory>

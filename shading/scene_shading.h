@@ -2,7 +2,7 @@
 // parameters, and looked up by material index while rendering (read-only, thread-safe).
 #pragma once
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "parser/diagnostics.h"
 #include "shading/lights.h"
 #include "shading/surface_shader.h"

@@ -1,7 +1,7 @@
 // What a surface shader sees at one hit: the RI shading globals we support.
 #pragma once
 
-#include "core/vec.h"
+#include "core/math/vec.h"
 
 namespace darc {
 

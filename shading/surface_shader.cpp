@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/shader_parameter_checks.h"
+#include "core/scene/builder/shader_parameter_checks.h"
 
 namespace darc {
 

@@ -11,7 +11,7 @@ namespace {
 
 constexpr int kExitOk = 0;
 constexpr int kExitSceneError = 3;
-// The cap of Option "trace" "maxdepth" (core/scene_builder_ray_tracing.cpp).
+// The cap of Option "trace" "maxdepth" (core/scene/builder/scene_builder_ray_tracing.cpp).
 constexpr int kMaxTraceDepth = 100;
 
 // Two perfect mirrors facing each other across an orthographic camera looking along +z: every

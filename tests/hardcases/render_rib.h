@@ -5,7 +5,7 @@
 #include <functional>
 #include <string>
 
-#include "core/coverage.h"
+#include "core/footprint/coverage.h"
 #include "integrator/render_frame.h"
 
 namespace darc::test {

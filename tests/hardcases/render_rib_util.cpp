@@ -15,7 +15,7 @@
 
 #include "hardcases/render_rib.h"
 
-#include "core/scene_builder.h"
+#include "core/scene/builder/scene_builder.h"
 #include "integrator/render_frame.h"
 #include "parser/rib_parser.h"
 

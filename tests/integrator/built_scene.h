@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "core/scene_builder.h"
+#include "core/scene/builder/scene_builder.h"
 #include "parser/rib_parser.h"
 
 namespace darc::test {

@@ -16,7 +16,7 @@ using test::build_scene;
 
 constexpr int kSize = 96;  // pixels across the image, which spans [-1, 1] in x and y
 constexpr float kPixel = 2.0f / kSize;
-// The limit of the cube [-1, 1]^3 (tests/core/subdivision_surface_test.cpp derives both): seen
+// The limit of the cube [-1, 1]^3 (tests/core/geometry/surfaces/subdivision/subdivision_surface_test.cpp derives both): seen
 // along an axis, its outline lies between the circle through the limit face centres (radius
 // 68/81, reached on the axes) and the sphere through the limit corners (radius sqrt(3)/2).
 constexpr float kInnerRadius = 68.0f / 81.0f;

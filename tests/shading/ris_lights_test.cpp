@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/scenes_from_rib.h"
+#include "support/scenes_from_rib.h"
 #include "shading/lights.h"
 
 namespace darc {

@@ -1,0 +1,37 @@
+#include "core/footprint/distance_ray.h"
+
+#include <cmath>
+
+namespace darc {
+
+namespace {
+
+bool finite3(const Vec3f& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+}  // namespace
+
+DistanceRay make_distance_ray(const Ray& ray, const RayFootprint& footprint) {
+  DistanceRay r;
+  if (!finite3(ray.o) || !finite3(ray.d) || std::isnan(ray.tmin) || std::isnan(ray.tmax)) return r;
+  // The frame in double, once per ray: it is reused for every segment.
+  Vec3d dir(ray.d);
+  double ray_length = length(dir);
+  if (!(ray_length > 0.0) || !std::isfinite(ray_length)) return r;
+  dir = dir / ray_length;
+  Vec3d x, y;
+  orthonormal_basis(dir, x, y);
+  r.valid = true;
+  r.origin = ray.o;
+  r.dir = Vec3f(dir);
+  r.frame_x = Vec3f(x);
+  r.frame_y = Vec3f(cross(dir, x));
+  r.ray_length = float(ray_length);
+  r.t_min = ray.tmin;
+  r.t_max = ray.tmax;
+  r.reach0 = footprint.reach(0.0f);
+  r.reach1 = footprint.reach(1.0f) - r.reach0;
+  r.footprint = &footprint;
+  return r;
+}
+
+}  // namespace darc

@@ -1,0 +1,27 @@
+// A ray prepared once for the footprint queries of many primitives (curve segments, points):
+// a frame perpendicular to its direction and its footprint's reach.
+#pragma once
+
+#include "core/footprint/ray_footprint.h"
+#include "core/math/ray.h"
+#include "core/math/vec.h"
+
+namespace darc {
+
+// A ray prepared once for the many segments (or points) it is tested against: a float frame perpendicular
+// to its direction and its footprint's reach. Per segment, only the control points are moved
+// into the frame (then turned in the frame's plane to lie along their chord), which is what
+// makes a rejected segment cost a few dozen flops.
+struct DistanceRay {
+  bool valid = false;      // false for non-finite or zero directions: every test misses
+  Vec3f origin, dir;       // dir is unit
+  Vec3f frame_x, frame_y;  // with dir, a right-handed orthonormal frame (frame_y = dir x frame_x)
+  float ray_length = 1;    // |ray.d|: t = depth / ray_length
+  float t_min = 0, t_max = 0;
+  float reach0 = 0, reach1 = 0;  // footprint reach at ray parameter t: reach0 + reach1 * t
+  const RayFootprint* footprint = nullptr;
+};
+
+DistanceRay make_distance_ray(const Ray& ray, const RayFootprint& footprint);
+
+}  // namespace darc

@@ -1,0 +1,201 @@
+#include "core/geometry/surfaces/polygon.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdint>
+
+namespace darc {
+
+namespace {
+
+// A polygon whose area is below this fraction of its squared bounding-box diagonal is treated
+// as degenerate (collinear or coincident points): its plane normal would be mostly rounding noise.
+constexpr double kDegenerateAreaFraction = 1e-10;
+// The fewest vertices of a loop, outer or hole.
+constexpr int kMinLoopVertices = 3;
+
+struct NewellPlane {
+  Vec3d normal;  // not normalized: its length is twice the loop's area
+  Vec3d centroid;
+  double diagonal = 0;  // bounding-box diagonal of the loop
+};
+
+// Newell's method (Sutherland et al. 1974): the sum of edge cross products about the centroid
+// is the area-weighted normal, robust for concave and slightly non-planar loops.
+NewellPlane newell_plane(const std::vector<Vec3f>& loop) {
+  NewellPlane plane;
+  BBox box;
+  for (const Vec3f& p : loop) {
+    plane.centroid += Vec3d(p);
+    box.extend(p);
+  }
+  plane.centroid = plane.centroid / double(loop.size());
+  for (size_t i = 0; i < loop.size(); ++i) {
+    Vec3d a = Vec3d(loop[i]) - plane.centroid;
+    Vec3d b = Vec3d(loop[(i + 1) % loop.size()]) - plane.centroid;
+    plane.normal += cross(a, b);
+  }
+  plane.diagonal = length(Vec3d(box.extent()));
+  return plane;
+}
+
+bool all_finite(const std::vector<std::vector<Vec3f>>& loops) {
+  for (const auto& loop : loops)
+    for (const Vec3f& p : loop)
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
+  return true;
+}
+
+bool is_planar(const std::vector<Vec3f>& loop, const NewellPlane& plane) {
+  Vec3d n = normalize(plane.normal);
+  for (const Vec3f& p : loop)
+    if (std::abs(dot(n, Vec3d(p) - plane.centroid)) > kNonPlanarTolerance * plane.diagonal) return false;
+  return true;
+}
+
+int dominant_axis(const Vec3d& n) {
+  Vec3d a = abs(n);
+  if (a.x >= a.y && a.x >= a.z) return 0;
+  return a.y >= a.z ? 1 : 2;
+}
+
+}  // namespace
+
+std::optional<PolygonShape> PolygonShape::make(const std::vector<std::vector<Vec3f>>& loops_world) {
+  if (loops_world.empty() || loops_world[0].size() < 3 || !all_finite(loops_world)) return std::nullopt;
+  NewellPlane plane = newell_plane(loops_world[0]);
+  double area2 = length(plane.normal);
+  if (!(area2 > kDegenerateAreaFraction * plane.diagonal * plane.diagonal)) return std::nullopt;
+
+  PolygonShape shape;
+  Vec3d n = plane.normal / area2;
+  shape.normal = Vec3f(n);
+  shape.plane_offset = dot(n, plane.centroid);
+  shape.drop_axis = dominant_axis(n);
+  int ax = (shape.drop_axis + 1) % 3, ay = (shape.drop_axis + 2) % 3;
+  for (const auto& loop : loops_world) {
+    if (loop.size() < 3) continue;  // a hole that encloses nothing
+    shape.loop_starts.push_back(uint32_t(shape.points_2d.size()));
+    for (const Vec3f& p : loop) {
+      shape.points_2d.push_back({p[ax], p[ay]});
+      shape.box.extend(p);
+    }
+  }
+  shape.loop_starts.push_back(uint32_t(shape.points_2d.size()));
+  return shape;
+}
+
+bool PolygonShape::contains_2d(float x, float y) const {
+  // Crossing-number test (W. R. Franklin's pnpoly): count edges crossed by the +x half-line
+  // from the point; half-open in y so a vertex on the line is counted once.
+  bool inside = false;
+  for (size_t k = 0; k + 1 < loop_starts.size(); ++k) {
+    uint32_t begin = loop_starts[k], end = loop_starts[k + 1];
+    for (uint32_t i = begin, j = end - 1; i < end; j = i++) {
+      const Vec2f& a = points_2d[i];
+      const Vec2f& b = points_2d[j];
+      if ((a.y > y) != (b.y > y) && x < (b.x - a.x) * (y - a.y) / (b.y - a.y) + a.x) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+bool PolygonShape::intersect(const Ray& ray, SurfaceHit& hit) const {
+  Vec3d n(normal);
+  Vec3d o(ray.o), d(ray.d);
+  double denom = dot(n, d);
+  if (!(denom != 0)) return false;  // parallel to the plane (or NaN)
+  double t = (plane_offset - dot(n, o)) / denom;
+  if (!(t > double(ray.tmin) && t < double(ray.tmax))) return false;
+  Vec3d p = o + d * t;
+  int ax = (drop_axis + 1) % 3, ay = (drop_axis + 2) % 3;
+  if (!contains_2d(float(p[ax]), float(p[ay]))) return false;
+  hit.t = float(t);
+  hit.p = Vec3f(p);
+  hit.ng = normal;
+  hit.u = hit.v = 0;
+  return true;
+}
+
+std::vector<PolygonShape> make_face_shapes(const std::vector<std::vector<Vec3f>>& loops_world, int source_face) {
+  std::vector<PolygonShape> shapes;
+  auto add = [&](const std::vector<std::vector<Vec3f>>& loops) {
+    if (auto shape = PolygonShape::make(loops)) {
+      shape->source_face = source_face;
+      shapes.push_back(std::move(*shape));
+    }
+  };
+  bool single_loop_to_check = loops_world.size() == 1 && loops_world[0].size() > 3 && all_finite(loops_world);
+  if (single_loop_to_check) {
+    const std::vector<Vec3f>& loop = loops_world[0];
+    if (!is_planar(loop, newell_plane(loop))) {
+      for (size_t i = 1; i + 1 < loop.size(); ++i) add({{loop[0], loop[i], loop[i + 1]}});
+      return shapes;
+    }
+  }
+  add(loops_world);
+  return shapes;
+}
+
+std::vector<PolygonShape> make_points_general_polygons(const std::vector<int>& nloops_per_face,
+                                                       const std::vector<int>& nverts_per_loop,
+                                                       const std::vector<int>& indices,
+                                                       const std::vector<Vec3f>& P_world, std::string& error) {
+  // Validate every count and index before building anything, so a bad face fails the whole call.
+  int64_t total_loops = 0;
+  for (size_t f = 0; f < nloops_per_face.size(); ++f) {
+    if (nloops_per_face[f] < 1) {
+      error = fmt::format("face {} has {} loops (at least 1 required)", f, nloops_per_face[f]);
+      return {};
+    }
+    total_loops += nloops_per_face[f];
+  }
+  if (total_loops != int64_t(nverts_per_loop.size())) {
+    error = fmt::format("loop counts add up to {} loops but {} vertex counts were given", total_loops,
+                        nverts_per_loop.size());
+    return {};
+  }
+  int64_t total_verts = 0;
+  for (size_t k = 0; k < nverts_per_loop.size(); ++k) {
+    // RI Spec 3.2: a polygon (and each of its holes) has at least 3 vertices; a shorter loop
+    // encloses nothing, so it is a count error as in Polygon and GeneralPolygon.
+    if (nverts_per_loop[k] < kMinLoopVertices) {
+      error = fmt::format("loop {} has {} vertices (at least {} required)", k, nverts_per_loop[k], kMinLoopVertices);
+      return {};
+    }
+    total_verts += nverts_per_loop[k];
+  }
+  if (total_verts != int64_t(indices.size())) {
+    error = fmt::format("vertex counts add up to {} vertices but {} indices were given", total_verts, indices.size());
+    return {};
+  }
+  for (int index : indices) {
+    if (index < 0 || size_t(index) >= P_world.size()) {
+      error = fmt::format("vertex index {} out of range ({} points)", index, P_world.size());
+      return {};
+    }
+  }
+
+  std::vector<PolygonShape> shapes;
+  size_t loop = 0, next_index = 0;
+  std::vector<std::vector<Vec3f>> loops;
+  for (size_t f = 0; f < nloops_per_face.size(); ++f) {
+    loops.assign(size_t(nloops_per_face[f]), {});
+    for (auto& points : loops) {
+      int count = nverts_per_loop[loop++];
+      points.reserve(size_t(count));
+      for (int i = 0; i < count; ++i) points.push_back(P_world[size_t(indices[next_index++])]);
+    }
+    for (PolygonShape& shape : make_face_shapes(loops, int(f))) shapes.push_back(std::move(shape));
+  }
+  return shapes;
+}
+
+std::vector<PolygonShape> make_points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,
+                                               const std::vector<Vec3f>& P_world, std::string& error) {
+  std::vector<int> one_loop_each(nverts_per_face.size(), 1);
+  return make_points_general_polygons(one_loop_each, nverts_per_face, indices, P_world, error);
+}
+
+}  // namespace darc

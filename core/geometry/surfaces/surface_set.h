@@ -1,0 +1,70 @@
+// Every surface of a frame behind one interface: the tracers ask it for bounds, hits, normals
+// and materials by surface index and never switch over the kinds themselves (DESIGN.md, "one
+// geometry dispatch point"). Analytic quadrics stay analytic here; patches, NURBS and
+// subdivision surfaces arrive as triangles. Surface index order: all spheres, then all
+// polygons, then all triangles, then the other quadrics (the order the acceleration structure
+// is built in).
+#pragma once
+
+#include "core/math/bbox.h"
+#include "core/geometry/surfaces/polygon.h"
+#include "core/geometry/surfaces/quadric.h"
+#include "core/math/ray.h"
+#include "core/geometry/surfaces/sphere.h"
+#include "core/geometry/surfaces/surface_hit.h"
+#include "core/geometry/surfaces/triangle_store.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace darc {
+
+struct SurfaceSet {
+  enum class Kind { Sphere, Polygon, Triangle, Quadric };
+
+  std::vector<Sphere> spheres;
+  std::vector<PolygonShape> polygons;
+  TriangleStore triangles;
+  std::vector<Quadric> quadrics;  // Cone, Cylinder, Disk, Paraboloid, Hyperboloid, Torus
+  // Per shape of each kind: an index into Scene::materials.
+  std::vector<uint32_t> sphere_material, polygon_material, triangle_material, quadric_material;
+
+  size_t size() const { return spheres.size() + polygons.size() + triangles.size() + quadrics.size(); }
+  bool empty() const { return size() == 0; }
+
+  // The kind of surface `surface` and its index among that kind.
+  Kind locate(uint32_t surface, uint32_t& local) const {
+    const uint32_t ns = uint32_t(spheres.size()), np = uint32_t(polygons.size());
+    if (surface < ns) { local = surface; return Kind::Sphere; }
+    if (surface < ns + np) { local = surface - ns; return Kind::Polygon; }
+    const uint32_t nt = uint32_t(triangles.size());
+    if (surface < ns + np + nt) { local = surface - ns - np; return Kind::Triangle; }
+    local = surface - ns - np - nt;
+    return Kind::Quadric;
+  }
+
+  BBox bounds(uint32_t surface) const;
+  uint32_t material(uint32_t surface) const;
+  // Nearest hit with t in (ray.tmin, ray.tmax). hit.ng is the surface's own normal, orientation
+  // not applied (the caller applies Material::flip_normals and Sides).
+  bool intersect(uint32_t surface, const Ray& ray, SurfaceHit& hit) const;
+  // The geometric normal (as intersect gives it) at p, a point on or next to the surface.
+  Vec3f geometric_normal(uint32_t surface, const Vec3f& p) const;
+  // True for planar surfaces (polygons, triangles, disks): a ray leaving one cannot hit it again.
+  bool is_flat(uint32_t surface) const {
+    uint32_t i;
+    const Kind kind = locate(surface, i);
+    return kind == Kind::Quadric ? quadrics[i].flat : kind != Kind::Sphere;
+  }
+  // True for the triangles of tessellated surfaces and the faces of polygon meshes: pieces of a
+  // larger surface, often smaller than a ray's footprint, which together cover it without gaps.
+  bool is_piece(uint32_t surface) const {
+    uint32_t i;
+    const Kind kind = locate(surface, i);
+    return kind == Kind::Triangle || (kind == Kind::Polygon && polygons[i].piece);
+  }
+  // The normal shading uses at p: the geometric one, except on triangles with vertex normals.
+  Vec3f shading_normal(uint32_t surface, const Vec3f& p) const;
+};
+
+}  // namespace darc

@@ -1,0 +1,53 @@
+// The scene's one store of triangles, world space: every surface that is lowered to triangles
+// when the scene is built (patches, NURBS, subdivision surfaces) ends up here, so that the
+// tracers see one kind for all of them (DESIGN.md, "one geometry dispatch point").
+#pragma once
+
+#include "core/math/bbox.h"
+#include "core/math/ray.h"
+#include "core/geometry/surfaces/surface_hit.h"
+#include "core/geometry/surfaces/triangle_mesh_data.h"
+#include "core/math/vec.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace darc {
+
+class TriangleStore {
+ public:
+  // Adds a world-space mesh; returns how many of its triangles were kept (degenerate ones, of
+  // zero area or with a non-finite vertex, are dropped).
+  size_t add(const TriangleMeshData& world);
+
+  size_t size() const { return corners_.size() / 3; }
+  BBox bounds(uint32_t triangle) const;
+
+  // Nearest hit with t in the open interval (ray.tmin, ray.tmax): Moller-Trumbore in double
+  // precision, so that the shared edges of a tessellated surface leave no visible pinholes.
+  // hit.ng is the right-hand face normal; hit.u, hit.v the interpolated surface parameters
+  // (the barycentrics when the mesh has none).
+  bool intersect(uint32_t triangle, const Ray& ray, SurfaceHit& hit) const;
+
+  // The unit face normal, (b - a) x (c - a) normalized (orientation not applied).
+  Vec3f face_normal(uint32_t triangle) const { return face_normal_[triangle]; }
+
+  // The shading normal at the point of the triangle's plane nearest p: the vertex normals
+  // interpolated with p's barycentrics (clamped to the triangle), on the face normal's side;
+  // the face normal when the mesh has no normals.
+  Vec3f shading_normal(uint32_t triangle, const Vec3f& p) const;
+
+  size_t memory_bytes() const;
+
+ private:
+  // The barycentrics (of b and c) of the point of the triangle's plane nearest p.
+  Vec2f barycentric(uint32_t triangle, const Vec3f& p) const;
+
+  std::vector<Vec3f> P_, N_;    // vertices of all meshes; N_ parallel to P_ or empty per mesh
+  std::vector<Vec2f> uv_;       // parallel to P_
+  std::vector<uint32_t> corners_;  // 3 vertex indices per triangle
+  std::vector<Vec3f> face_normal_;
+  std::vector<uint8_t> smooth_;  // per triangle: has vertex normals
+};
+
+}  // namespace darc

@@ -1,0 +1,20 @@
+// A ray in world space: points o + t*d for t in [tmin, tmax]. d need not be unit length
+// (camera rays keep |d| = 1 so that t is a distance).
+#pragma once
+
+#include "core/math/vec.h"
+
+#include <limits>
+
+namespace darc {
+
+struct Ray {
+  Vec3f o;
+  Vec3f d;
+  float tmin = 0.0f;
+  float tmax = std::numeric_limits<float>::infinity();
+
+  Vec3f at(float t) const { return o + d * t; }
+};
+
+}  // namespace darc

@@ -1,0 +1,347 @@
+// SceneBuilder's geometry requests: Curves, Sphere and the polygons, turned into world-space
+// shapes of the scene being built (the graphics state itself lives in scene_builder.cpp).
+#include "core/geometry/curves/curve_builder.h"
+#include "core/geometry/curves/curve_set.h"
+#include "core/scene/frame_memory.h"
+#include "core/scene/builder/scene_builder.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace darc {
+
+// ---------------------------------------------------------------- geometry
+
+bool SceneBuilder::building_geometry(const char* request, const SourceLoc& loc) {
+  if (!in_world_) throw RibError(std::string(request) + " outside WorldBegin/WorldEnd");
+  return !frame_skipped_ && scene_ != nullptr && (void(loc), true);
+}
+
+bool SceneBuilder::reserve_frame_memory(uint64_t curve_segments, uint64_t surfaces, uint64_t polygon_points) {
+  if (frame_over_memory_) return false;
+  if (overrides_.memory_limit_bytes == 0) return true;
+  frame_memory_estimate_ += frame_memory_estimate(curve_segments, surfaces, polygon_points);
+  if (frame_memory_estimate_ <= overrides_.memory_limit_bytes) return true;
+  frame_over_memory_ = true;
+  // (The parser prefixes the message with the request's name and position.)
+  throw RibError("the frame's geometry would need about " +
+                 format_bytes(frame_memory_estimate_) + " with this request, more than the " +
+                 format_bytes(overrides_.memory_limit_bytes) + " a frame may use (" +
+                 (overrides_.memory_limit_source.empty() ? std::string("--memory-limit")
+                                                         : overrides_.memory_limit_source) +
+                 "); the frame is not rendered");
+}
+
+uint64_t SceneBuilder::replayed_id() const {
+  // Calls replayed from an ObjectBegin block share the ObjectInstance's id: not one request.
+  return replaying_ ? 0 : replayed_id_;
+}
+
+void SceneBuilder::note_geometry(uint64_t id) {
+  if (id == 0) {
+    geometry_key_valid_ = false;
+    return;
+  }
+  // The request and the transform it is built with (the basis too, for curves: it is in the
+  // key through the attribute state, whose changes are requests of their own in the same archive
+  // or before it; the transform alone can move without a request of the archive changing).
+  geometry_key_.append(reinterpret_cast<const char*>(&id), sizeof id);
+  geometry_key_.append(reinterpret_cast<const char*>(&ctm_.m), sizeof ctm_.m);
+  const CurveBasis& b = attributes_.vbasis;
+  geometry_key_.append(reinterpret_cast<const char*>(&b.m), sizeof b.m);
+  geometry_key_.append(reinterpret_cast<const char*>(&b.step), sizeof b.step);
+}
+
+uint32_t SceneBuilder::make_material(const SourceLoc&) {
+  // One material per distinct attribute state, not per primitive request (an exporter writing one
+  // Curves call per strand would otherwise make, and shade with, thousands of equal materials).
+  // Shader parameter lists compare by identity: they are shared while the state is unchanged.
+  const bool flip = attributes_.orientation_lh != object_space_left_handed();
+  MaterialKey key{attributes_.surface,  attributes_.surface_params, attributes_.color,
+                  attributes_.opacity,  attributes_.sides,                flip,
+                  attributes_.matte,    attributes_.lights_on,            attributes_.area_light,
+                  attributes_.area_light_params, attributes_.transmission};
+  auto found = material_ids_.find(key);
+  if (found != material_ids_.end()) return found->second;
+  Material m;
+  m.surface = attributes_.surface;
+  m.surface_params = *attributes_.surface_params;
+  m.surface_loc = attributes_.surface_loc;
+  m.color = attributes_.color;
+  m.opacity = attributes_.opacity;
+  m.sides = attributes_.sides;
+  m.flip_normals = flip;
+  m.matte = attributes_.matte;
+  m.lights = attributes_.lights_on;
+  m.emissive_area_light = attributes_.area_light;
+  m.area_light_params = *attributes_.area_light_params;
+  m.transmission = attributes_.transmission;
+  scene_->materials.push_back(std::move(m));
+  const uint32_t id = uint32_t(scene_->materials.size() - 1);
+  material_ids_.emplace(std::move(key), id);
+  return id;
+}
+
+Vec3f SceneBuilder::to_world(const float* p) const {
+  return Vec3f(ctm_.transform_point(Vec3d{p[0], p[1], p[2]}));
+}
+
+namespace {
+
+bool all_finite(const Vec3f& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+std::optional<PrimvarInput> primvar(const ParamList& params, const char* name, int components) {
+  const Param* p = params.find(name);
+  if (!p) return std::nullopt;
+  if (p->decl.is_string() || p->decl.components() != components)
+    throw RibError(std::string("\"") + name + "\" must have " + std::to_string(components) +
+                   " numbers per value, declared as " + to_string(p->decl));
+  return PrimvarInput{p->decl.storage, p->floats, components};
+}
+
+// Reads "P" (3 floats per point) or "Pw" (4, divided by w) as 3-float points.
+std::vector<float> read_points(const ParamList& params, const char* request) {
+  if (const Param* p = params.find("P")) {
+    if (p->decl.components() != 3) throw RibError("\"P\" must be declared with 3 numbers per point");
+    return p->floats;
+  }
+  if (const Param* p = params.find("Pw")) {
+    if (p->decl.components() != 4) throw RibError("\"Pw\" must be declared with 4 numbers per point");
+    std::vector<float> out;
+    out.reserve(p->floats.size() / 4 * 3);
+    for (size_t i = 0; i + 3 < p->floats.size(); i += 4) {
+      float w = p->floats[i + 3];
+      if (w == 0) throw RibError("\"Pw\" has a point with w = 0");
+      out.insert(out.end(), {p->floats[i] / w, p->floats[i + 1] / w, p->floats[i + 2] / w});
+    }
+    return out;
+  }
+  throw RibError(std::string(request) + " needs \"P\" or \"Pw\"");
+}
+
+// What clamp_values changed: how many numbers, and the first of them (index and given value).
+struct ClampedValues {
+  size_t count = 0;
+  size_t first = 0;
+  float first_value = 0;
+};
+
+// Clamps every number of `values` to [lo, hi] in place, in one pass and without allocating, so
+// that it stays cheap for a million-vertex Curves call.
+ClampedValues clamp_values(std::vector<float>& values, float lo, float hi) {
+  ClampedValues clamped;
+  for (size_t i = 0; i < values.size(); ++i) {
+    const float v = values[i];
+    if (v >= lo && v <= hi) continue;
+    if (clamped.count++ == 0) {
+      clamped.first = i;
+      clamped.first_value = v;
+    }
+    values[i] = std::clamp(v, lo, hi);
+  }
+  return clamped;
+}
+
+// The warning for what clamp_values changed in primitive variable `name`, e.g.
+// "\"width\" (varying) value 3 is -0.01, negative: clamped to 0 (2 numbers clamped)".
+std::string clamp_message(const char* name, const PrimvarInput& pv, const ClampedValues& c, const char* problem,
+                          float lo, float hi) {
+  const float used = std::clamp(c.first_value, lo, hi);
+  const std::string which = pv.components == 1 ? fmt::format("value {}", c.first)
+                                               : fmt::format("value {} component {}", c.first / size_t(pv.components),
+                                                             c.first % size_t(pv.components));
+  return fmt::format("\"{}\" ({}) {} is {}, {}: clamped to {} ({} number{} clamped)", name, to_string(pv.storage),
+                     which, c.first_value, problem, used, c.count, c.count == 1 ? "" : "s");
+}
+
+constexpr float kFloatMax = std::numeric_limits<float>::max();
+
+// What a Curves call clamped, and what append_curves dropped, for the warnings.
+struct CurveClamps {
+  ClampedValues widths, opacities;
+  float constant_width = 0;  // as given
+  CurvesAppended appended;
+};
+
+void report_curve_clamps(const CurveClamps& c, const CurvesInput& in, Diagnostics& diag, const SourceLoc& loc) {
+  if (c.widths.count > 0)
+    diag.warning(loc, "Curves", clamp_message("width", *in.width, c.widths, "negative", 0, kFloatMax));
+  if (c.constant_width < 0)
+    diag.warning(loc, "Curves", fmt::format("\"constantwidth\" {} is negative: clamped to 0", c.constant_width));
+  if (c.opacities.count > 0)
+    diag.warning(loc, "Curves", clamp_message("Os", *in.Os, c.opacities, "outside [0, 1]", 0, 1));
+  const size_t dropped = c.appended.segments_beyond_float_range;
+  if (dropped == 1)
+    diag.warning(loc, "Curves",
+                 fmt::format("1 segment (in curve {}) lies beyond the float range in world space: dropped",
+                             c.appended.first_curve_beyond));
+  else if (dropped > 1)
+    diag.warning(loc, "Curves",
+                 fmt::format("{} segments (the first in curve {}) lie beyond the float range in world space: dropped",
+                             dropped, c.appended.first_curve_beyond));
+}
+
+}  // namespace
+
+void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
+                          const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.curves(type, nvertices, wrap, params, loc); })) return;
+  if (skip_motion_sample()) return;
+  if (!building_geometry("Curves", loc)) return;
+  if (type != "linear" && type != "cubic")
+    throw RibError("curve type must be \"linear\" or \"cubic\", found \"" + type + "\"");
+  if (wrap != "periodic" && wrap != "nonperiodic")
+    throw RibError("wrap must be \"periodic\" or \"nonperiodic\", found \"" + wrap + "\"");
+  // A Curves call replayed from a cached archive with the transform, basis and colours of the
+  // last time it was built: its segments are copied (bitwise the same as building them again).
+  const uint64_t id = replayed_id();
+  note_geometry(id);
+  if (id != 0) {
+    auto it = curve_chunks_.find(id);
+    if (it != curve_chunks_.end()) {
+      CurveChunk& chunk = it->second;
+      if (chunk.ctm == ctm_ && chunk.basis.m == attributes_.vbasis.m && chunk.basis.step == attributes_.vbasis.step &&
+          chunk.color == attributes_.color && chunk.opacity == attributes_.opacity) {
+        if (!reserve_frame_memory(chunk.segments.size(), 0, 0)) return;
+        chunk.used = true;
+        scene_->curves.append(chunk.segments, make_material(loc), next_strand_id_);
+        next_strand_id_ += chunk.strands;
+        return;
+      }
+    }
+  }
+  CurvesInput in;
+  in.cubic = type == "cubic";
+  in.periodic = wrap == "periodic";
+  in.nvertices = nvertices;
+  in.basis = attributes_.vbasis;
+  in.P = read_points(params, "Curves");
+  in.p_components = 3;
+  in.width = primvar(params, "width", 1);
+  if (const Param* cw = params.find("constantwidth")) {
+    if (cw->decl.is_string() || cw->floats.size() != 1)
+      throw RibError(fmt::format("\"constantwidth\" must be one number, found {}",
+                                 cw->decl.is_string() ? "a string" : fmt::format("{} numbers", cw->floats.size())));
+    in.constantwidth = cw->floats[0];
+  }
+  in.N = primvar(params, "N", 3);
+  in.Cs = primvar(params, "Cs", 3);
+  in.Os = primvar(params, "Os", 3);
+  in.default_cs = attributes_.color;
+  in.default_os = attributes_.opacity;
+  in.object_to_world = ctm_;
+  const CurvesTopology topology{in.cubic, in.periodic, in.basis.step, in.nvertices};
+  validate_topology(topology);
+  uint64_t segments = 0;
+  for (int nv : in.nvertices) segments += segments_in_curve(topology, nv);
+  if (!reserve_frame_memory(segments, 0, 0)) return;
+  // Negative widths (a cubic width overshooting at a tip, an exporter's rounding) mean "nothing
+  // there": clamped to 0, so the strand keeps its other segments. Opacity is a fraction.
+  CurveClamps clamps;
+  clamps.widths = in.width ? clamp_values(in.width->values, 0, kFloatMax) : ClampedValues{};
+  clamps.opacities = in.Os ? clamp_values(in.Os->values, 0, 1) : ClampedValues{};
+  clamps.constant_width = in.constantwidth.value_or(0);
+  if (clamps.constant_width < 0) in.constantwidth = 0.0f;
+  uint32_t material = make_material(loc);
+  if (id == 0) {
+    clamps.appended = append_curves(scene_->curves, in, material, next_strand_id_);
+  } else {
+    CurveChunk chunk{ctm_, attributes_.vbasis, attributes_.color, attributes_.opacity, CurveSet{}, 0, true};
+    clamps.appended = append_curves(chunk.segments, in, material, chunk.strands);
+    chunk.segments.shrink_to_fit();
+    scene_->curves.append(chunk.segments, material, next_strand_id_);
+    next_strand_id_ += chunk.strands;
+    curve_chunks_.insert_or_assign(id, std::move(chunk));
+  }
+  // Warnings only once the request is known to be valid (append_curves throws for bad counts).
+  report_curve_clamps(clamps, in, diag_, loc);
+}
+
+void SceneBuilder::polygon(const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.polygon(params, loc); })) return;
+  if (skip_motion_sample()) return;
+  std::vector<float> P = read_points(params, "Polygon");
+  if (P.size() < 9) throw RibError("a polygon needs at least 3 vertices, found " + std::to_string(P.size() / 3));
+  std::vector<int> indices(P.size() / 3);
+  for (size_t i = 0; i < indices.size(); ++i) indices[i] = int(i);
+  add_polygons({1}, {int(indices.size())}, indices, params, "Polygon", loc);
+}
+
+void SceneBuilder::general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params,
+                                   const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.general_polygon(nverts_per_loop, params, loc); })) return;
+  if (skip_motion_sample()) return;
+  size_t total = 0;
+  for (int n : nverts_per_loop) {
+    if (n < 3) throw RibError("each loop needs at least 3 vertices, found " + std::to_string(n));
+    total += size_t(n);
+  }
+  // The loops take the points in order: a count beyond them fails before the index list is
+  // allocated (else "GeneralPolygon [2000000000]" in a 50-byte file asks for 8 GB).
+  const size_t points = read_points(params, "GeneralPolygon").size() / 3;
+  if (total > points)
+    throw RibError("the loops have " + std::to_string(total) + " vertices but only " + std::to_string(points) +
+                   " points are given");
+  // Fewer: the loops take the points in order, so a point no loop takes is a count mismatch.
+  if (total < points) throw RibError(fmt::format("the loops have {} vertices but {} points are given", total, points));
+  std::vector<int> indices(total);
+  for (size_t i = 0; i < total; ++i) indices[i] = int(i);
+  add_polygons({int(nverts_per_loop.size())}, nverts_per_loop, indices, params, "GeneralPolygon", loc);
+}
+
+void SceneBuilder::points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,
+                                   const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.points_polygons(nverts_per_face, indices, params, loc); })) return;
+  if (skip_motion_sample()) return;
+  std::vector<int> loops(nverts_per_face.size(), 1);
+  add_polygons(loops, nverts_per_face, indices, params, "PointsPolygons", loc);
+}
+
+void SceneBuilder::points_general_polygons(const std::vector<int>& nloops_per_face,
+                                           const std::vector<int>& nverts_per_loop, const std::vector<int>& indices,
+                                           const ParamList& params, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.points_general_polygons(nloops_per_face, nverts_per_loop, indices, params, loc); }))
+    return;
+  if (skip_motion_sample()) return;
+  add_polygons(nloops_per_face, nverts_per_loop, indices, params, "PointsGeneralPolygons", loc);
+}
+
+void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
+                                const std::vector<int>& indices, const ParamList& params, const char* request,
+                                const SourceLoc& loc) {
+  if (!building_geometry(request, loc)) return;
+  note_geometry(replayed_id());
+  if (!reserve_frame_memory(0, nloops_per_face.size(), indices.size())) return;
+  std::vector<float> P = read_points(params, request);
+  std::vector<Vec3f> world(P.size() / 3);
+  size_t beyond_float_range = 0;
+  for (size_t i = 0; i < world.size(); ++i) {
+    world[i] = to_world(&P[3 * i]);
+    beyond_float_range += !all_finite(world[i]);
+  }
+  std::string error;
+  std::vector<PolygonShape> shapes =
+      make_points_general_polygons(nloops_per_face, nverts_per_loop, indices, world, error);
+  if (!error.empty()) throw RibError(error);
+  // PolygonShape::make drops a face with such a point.
+  if (beyond_float_range > 0)
+    diag_.warning(loc, request,
+                  fmt::format("{} beyond the float range in world space: the faces that use {} are dropped",
+                              beyond_float_range == 1 ? std::string("1 point lies")
+                                                      : fmt::format("{} points lie", beyond_float_range),
+                              beyond_float_range == 1 ? "it" : "them"));
+  uint32_t material = make_material(loc);
+  // The faces of a mesh (or a non-planar face's fan) meet edge to edge and may each be smaller
+  // than a footprint: pieces of one surface (SurfaceSet::is_piece).
+  const bool pieces = shapes.size() > 1;
+  for (PolygonShape& s : shapes) {
+    s.piece = pieces;
+    scene_->surfaces.polygons.push_back(std::move(s));
+    scene_->surfaces.polygon_material.push_back(material);
+  }
+}
+
+}  // namespace darc

@@ -1,0 +1,118 @@
+// SceneBuilder's Patch, PatchMesh and NuPatch: their arguments and control points read into the
+// descriptions that core/geometry/surfaces/patches/patch_tessellation.h and core/geometry/surfaces/patches/nurbs_tessellation.h lower to triangles,
+// which go to the scene's triangle store with the request's material (as the polygons, the
+// colour and opacity are the attributes').
+
+#include <fmt/format.h>
+
+#include <string>
+#include <vector>
+
+#include "core/geometry/surfaces/patches/nurbs_tessellation.h"
+#include "core/geometry/surfaces/patches/patch_tessellation.h"
+#include "core/scene/builder/scene_builder.h"
+
+namespace darc {
+
+namespace {
+
+PatchType patch_type(const std::string& name) {
+  if (name == "bilinear") return PatchType::bilinear;
+  if (name == "bicubic") return PatchType::bicubic;
+  throw RibError(fmt::format("unknown patch type \"{}\": \"bilinear\" or \"bicubic\"", name));
+}
+
+bool periodic(const std::string& wrap, char direction) {
+  if (wrap == "periodic") return true;
+  if (wrap == "nonperiodic") return false;
+  throw RibError(fmt::format("unknown {}wrap \"{}\": \"periodic\" or \"nonperiodic\"", direction, wrap));
+}
+
+// The control points from "P" (w = 1), "Pw" (homogeneous, kept so: the surface is rational) or,
+// where allowed, "Pz" (heights; x and y come from the surface's parameters).
+std::vector<HomogeneousPoint> control_points(const ParamList& params, const char* request, bool allow_heights,
+                                             bool& height_field) {
+  height_field = false;
+  std::vector<HomogeneousPoint> points;
+  if (const Param* p = params.find("P")) {
+    if (p->decl.components() != 3) throw RibError("\"P\" must be declared with 3 numbers per point");
+    for (size_t i = 0; i + 2 < p->floats.size(); i += 3)
+      points.push_back({{p->floats[i], p->floats[i + 1], p->floats[i + 2]}, 1});
+  } else if (const Param* pw = params.find("Pw")) {
+    if (pw->decl.components() != 4) throw RibError("\"Pw\" must be declared with 4 numbers per point");
+    for (size_t i = 0; i + 3 < pw->floats.size(); i += 4)
+      points.push_back({{pw->floats[i], pw->floats[i + 1], pw->floats[i + 2]}, pw->floats[i + 3]});
+  } else if (const Param* pz = allow_heights ? params.find("Pz") : nullptr) {
+    if (pz->decl.components() != 1) throw RibError("\"Pz\" must be declared with 1 number per point");
+    height_field = true;
+    for (float z : pz->floats) points.push_back({{0, 0, z}, 1});
+  } else {
+    throw RibError(fmt::format("{} needs \"P\"{}", request, allow_heights ? ", \"Pw\" or \"Pz\"" : " or \"Pw\""));
+  }
+  return points;
+}
+
+// Per-vertex colours would need per-vertex shading data the triangle store does not keep.
+void warn_of_interpolated_colours(const ParamList& params, Diagnostics& diag, const char* request,
+                                  const SourceLoc& loc) {
+  for (const char* name : {"Cs", "Os"}) {
+    const Param* p = params.find(name);
+    if (!p || p->decl.storage == StorageClass::Constant || p->decl.storage == StorageClass::Uniform) continue;
+    diag.warning_once(std::string("interpolated colours on ") + request, loc, request,
+                      fmt::format("vertex and varying \"Cs\" and \"Os\" are not supported on {}: the Color and "
+                                  "Opacity attributes are used",
+                                  request));
+    return;
+  }
+}
+
+}  // namespace
+
+void SceneBuilder::add_patch(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc) {
+  PatchMeshDescription mesh;
+  mesh.type = patch_type(r.strings.at(0));
+  mesh.nu = mesh.nv = mesh.type == PatchType::bilinear ? 2 : 4;
+  // 4 x 4 points make one nonperiodic patch in any basis step: (4 - 4) / step + 1.
+  mesh.u_basis = attributes_.ubasis;
+  mesh.v_basis = attributes_.vbasis;
+  add_patch_surface(mesh, params, "Patch", loc);
+}
+
+void SceneBuilder::add_patch_mesh(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc) {
+  PatchMeshDescription mesh;
+  mesh.type = patch_type(r.strings.at(0));
+  mesh.nu = int(r.numbers.at(0));
+  mesh.nv = int(r.numbers.at(1));
+  mesh.u_periodic = periodic(r.strings.at(1), 'u');
+  mesh.v_periodic = periodic(r.strings.at(2), 'v');
+  mesh.u_basis = attributes_.ubasis;
+  mesh.v_basis = attributes_.vbasis;
+  add_patch_surface(mesh, params, "PatchMesh", loc);
+}
+
+void SceneBuilder::add_patch_surface(PatchMeshDescription& mesh, const ParamList& params, const char* request,
+                                     const SourceLoc& loc) {
+  mesh.points = control_points(params, request, true, mesh.height_field);
+  warn_of_interpolated_colours(params, diag_, request, loc);
+  std::string error;
+  const TriangleMeshData triangles = tessellate_patch_mesh(mesh, error);
+  if (!error.empty()) throw RibError(error);
+  add_triangle_mesh(triangles, make_material(loc));
+}
+
+void SceneBuilder::add_nu_patch(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc) {
+  // numbers: nu uorder umin umax nv vorder vmin vmax; number_arrays: uknot vknot.
+  NurbsSurfaceDescription s;
+  const std::vector<double>& n = r.numbers;
+  s.u = {int(n.at(0)), int(n.at(1)), r.number_arrays.at(0), n.at(2), n.at(3)};
+  s.v = {int(n.at(4)), int(n.at(5)), r.number_arrays.at(1), n.at(6), n.at(7)};
+  bool height_field = false;
+  s.points = control_points(params, "NuPatch", false, height_field);
+  warn_of_interpolated_colours(params, diag_, "NuPatch", loc);
+  std::string error;
+  const TriangleMeshData triangles = tessellate_nurbs(s, error);
+  if (!error.empty()) throw RibError(error);
+  add_triangle_mesh(triangles, make_material(loc));
+}
+
+}  // namespace darc

@@ -1,0 +1,34 @@
+// What a frame's geometry will cost in memory, estimated from its primitive counts before the
+// geometry is built, so that a frame larger than the memory darc may use fails with a clear
+// error at the request that crosses the limit, instead of meeting the kernel's OOM killer
+// halfway through the build (SceneBuilder, FrameOverrides::memory_limit_bytes).
+//
+// The figures are the peaks measured on a 1M-segment hair scene by bench/memory_per_segment
+// (docs/memory.md), rounded up: they include what the arrays' growth and the BVH build hold for
+// a moment, not only what stays. tests/core/scene/frame_memory_test.cpp checks that they stay above what
+// CurveSet and Accelerator report on real scenes.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace darc {
+
+// A curve segment: its CurveSet entry (81 B measured: control points, width, ids, flags, the
+// arrays' slack) and the peak of the BVH build over it (243 B: the boxes, centroids and binary
+// tree the 4-wide BVH is collapsed from; 49 B of it stay), 324 B in all, rounded up.
+inline constexpr uint64_t kFrameBytesPerCurveSegment = 336;
+// A sphere or a polygon: the shape, its material index, and its share of the BVH and its build.
+inline constexpr uint64_t kFrameBytesPerSurface = 512;
+// Each point of a polygon's loops (its 2D copy, index and loop bookkeeping).
+inline constexpr uint64_t kFrameBytesPerPolygonPoint = 32;
+
+inline uint64_t frame_memory_estimate(uint64_t curve_segments, uint64_t surfaces, uint64_t polygon_points) {
+  return curve_segments * kFrameBytesPerCurveSegment + surfaces * kFrameBytesPerSurface +
+         polygon_points * kFrameBytesPerPolygonPoint;
+}
+
+// Bytes, for messages: "1.5 GB", "340 MB", "12 kB" (powers of 1024, as Slurm's --mem counts).
+std::string format_bytes(uint64_t bytes);
+
+}  // namespace darc

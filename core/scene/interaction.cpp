@@ -1,0 +1,146 @@
+#include "core/scene/interaction.h"
+
+#include "core/math/curve_basis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace darc {
+
+namespace {
+
+template <typename T>
+T bezier(const T* c, float u) {
+  float s = 1 - u;
+  return c[0] * (s * s * s) + c[1] * (3 * s * s * u) + c[2] * (3 * s * u * u) + c[3] * (u * u * u);
+}
+
+// The footprint's stretch on a surface seen at a grazing angle is limited to this factor (the
+// surface seen at under 7 degrees): at the silhouette the exact stretch has no bound, and
+// reflected and refracted footprints would inherit it.
+constexpr float kMaxGrazingStretch = 8.0f;
+
+// The offset of a neighbouring ray's hit on the plane through P with normal n (Igehy's transfer):
+// the neighbour at parameter t is at P + axis, then slides along d onto the plane.
+Vec3f transfer(const Vec3f& axis, const Vec3f& d, const Vec3f& n) {
+  const float dn = dot(d, n);
+  const Vec3f perpendicular = axis - d * (dot(axis, d) / dot(d, d));
+  if (std::abs(dn) < 1e-4f * length(d)) return perpendicular;
+  // The exact offset is the perpendicular one plus a slide along the ray; the slide is what grows
+  // without bound at grazing angles, so it is the part shortened to the stretch limit.
+  const Vec3f slide = axis - d * (dot(axis, n) / dn) - perpendicular;
+  const float limit2 = kMaxGrazingStretch * kMaxGrazingStretch * length_squared(perpendicular);
+  const float slide2 = length_squared(slide), room2 = limit2 - length_squared(perpendicular);
+  if (slide2 > room2 && slide2 > 0) return perpendicular + slide * std::sqrt(std::max(0.0f, room2) / slide2);
+  return perpendicular + slide;
+}
+
+// A point: a disc facing the ray, so N faces the ray as a non-oriented curve's does. Seen
+// through a footprint larger than the disc, P and the footprint are moved onto the part of the
+// footprint that is the disc (a square of its area around its centre), as a strand's band is:
+// rays leaving it start on it, and its shadow footprint is its own size, not the pixel's.
+Interaction point_interaction(const PointSet& points, uint32_t local, const Ray& ray, Interaction it,
+                              const RayFootprint* footprint) {
+  it.material = points.material[local];
+  it.N = -normalize(ray.d);
+  it.Cs = points.color(local);
+  it.Os = points.opacity(local);
+  if (!footprint) return it;
+  const Vec3f ax = transfer(footprint->axis_x(it.t), ray.d, it.N);
+  const Vec3f ay = transfer(footprint->axis_y(it.t), ray.d, it.N);
+  const float side = std::sqrt(length(cross(ax, ay)));
+  const float disc_side = std::sqrt(std::numbers::pi_v<float>) * points.radius[local];
+  const float scale = side > disc_side && side > 0.0f ? disc_side / side : 1.0f;
+  it.dPdx = ax * scale;
+  it.dPdy = ay * scale;
+  // The centre of that square: where the ray crosses the disc when the disc is the larger, kept
+  // inside the disc by half the square.
+  const Vec3f centre = points.center[local];
+  const Vec3f offset = it.P - centre;
+  const float room = std::max(0.0f, points.radius[local] - 0.5f * std::min(side, disc_side));
+  const float reach = length(offset);
+  if (reach > room) it.P = centre + (reach > 0.0f ? offset * (room / reach) : Vec3f{});
+  return it;
+}
+
+}  // namespace
+
+Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& ray, float t, float u,
+                             const RayFootprint* footprint) {
+  Interaction it;
+  it.primitive = primitive;
+  it.t = t;
+  it.u = u;
+  it.P = ray.at(t);
+  uint32_t local;
+  const Scene::PrimKind kind = scene.prim_kind(primitive, local);
+  Vec3f plane_normal;  // the plane the footprint is transferred to
+  if (kind == Scene::PrimKind::CurveSegment) {
+    const CurveSet& cs = scene.curves;
+    it.is_curve = true;
+    it.strand = cs.strand_id[local];
+    it.material = cs.attribute_id[local];
+    it.N = -ray.d;
+    if (cs.oriented(local)) {
+      it.N = normalize(lerp(u, cs.end_normal(local, 0), cs.end_normal(local, 1)));
+      if (scene.materials[it.material].flip_normals) it.N = -it.N;
+    }
+    it.Cs = bezier(cs.colors(local), u);
+    it.Os = bezier(cs.opacities(local), u);
+    const Vec3f* cp = cs.control_points(local);
+    it.dPdv = normalize(bezier_derivative(cp, u));
+    if (length_squared(it.dPdv) == 0.0f) it.dPdv = normalize(cp[3] - cp[0]);
+    plane_normal = -ray.d;
+  } else if (kind == Scene::PrimKind::Point) {
+    return point_interaction(scene.points, local, ray, it, footprint);
+  } else {
+    const SurfaceSet& surfaces = scene.surfaces;
+    it.material = surfaces.material(local);
+    const Material& m = scene.materials[it.material];
+    const Vec3f sign = m.flip_normals ? Vec3f{-1, -1, -1} : Vec3f{1, 1, 1};
+    const Vec3f ng = surfaces.geometric_normal(local, it.P);
+    const Vec3f ns = surfaces.shading_normal(local, it.P);
+    it.N = mul(sign, ns);
+    it.Cs = m.color;
+    it.Os = m.opacity;
+    plane_normal = ng;
+    if (footprint) {
+      it.dPdx = transfer(footprint->axis_x(t), ray.d, plane_normal);
+      it.dPdy = transfer(footprint->axis_y(t), ray.d, plane_normal);
+      // The normal's change across the footprint, as the difference of the normals at its
+      // edges (exact for a sphere's first-order change, bounded for large footprints; zero on
+      // flat faces).
+      it.dNdx = mul(sign, surfaces.shading_normal(local, it.P + it.dPdx) - ns);
+      it.dNdy = mul(sign, surfaces.shading_normal(local, it.P + it.dPdy) - ns);
+    }
+    return it;
+  }
+  if (footprint) {
+    // A strand thinner than the footprint fills only a band of it: the part of the footprint that
+    // is this strand is the band along the tangent, as long as the footprint and as wide as the
+    // strand, centred on its axis. Rays leaving the strand (shadow rays above all) start there, so
+    // that neighbours beside it in the same footprint do not shade it as if they were in front.
+    const Vec3f ax = transfer(footprint->axis_x(t), ray.d, plane_normal);
+    const Vec3f ay = transfer(footprint->axis_y(t), ray.d, plane_normal);
+    const float side = std::sqrt(length(cross(ax, ay)));
+    const Vec3f across = normalize(cross(it.dPdv, ray.d));
+    const float width = std::abs(bezier(scene.curves.widths(local), u));
+    const float band = std::min(side, width);
+    // The band's centre: on the axis when the strand is thinner than the footprint; where the ray
+    // crosses the ribbon when it is wider (kept inside the ribbon by half the band).
+    const Vec3f axis_point = bezier(scene.curves.control_points(local), u);
+    const float room = std::max(0.0f, 0.5f * (width - band));
+    const float offset = std::clamp(dot(it.P - axis_point, across), -room, room);
+    it.P = axis_point + across * offset;
+    it.dPdx = it.dPdv * side;
+    it.dPdy = across * band;
+    if (length_squared(across) == 0.0f) {  // seen along its tangent: the footprint as it is
+      it.dPdx = ax;
+      it.dPdy = ay;
+    }
+  }
+  return it;
+}
+
+}  // namespace darc

@@ -1,0 +1,130 @@
+#include "core/scene/ris/ris_bxdf_mapping.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+
+#include "core/scene/ris/ris_param_reader.h"
+
+namespace darc {
+
+namespace {
+
+// RenderMan's defaults for the parameters darc reads (RenderMan 21-24 documentation).
+constexpr Vec3f kPxrSurfaceDiffuseColor{0.18f, 0.18f, 0.18f};
+constexpr float kPxrSurfaceSpecularRoughness = 0.2f;
+constexpr Vec3f kPxrDisneyBaseColor{0.2f, 0.5f, 0.8f};
+constexpr float kPxrDisneySpecular = 0.5f;
+constexpr float kPxrDisneyRoughness = 0.25f;
+constexpr Vec3f kPxrDiffuseColor{0.5f, 0.5f, 0.5f};
+// darc's hair shader's own defaults (shading/surface_shader.cpp), kept where PxrMarschnerHair
+// gives nothing: its lobes are not Kajiya-Kay's.
+constexpr float kHairKd = 0.6f, kHairKs = 0.35f, kHairRoughness = 0.15f;
+// A Kajiya-Kay lobe cos^n falls to half its peak at angle a when n = ln(1/2) / ln(cos a); this is
+// how PxrMarschnerHair's specularConeAngleR (degrees) becomes roughness = 1/n. Cone angles are
+// kept within (0, 89] degrees so that the exponent stays finite and positive.
+constexpr float kMinConeDegrees = 0.01f, kMaxConeDegrees = 89;
+
+Param number_param(const std::string& name, float v) {
+  Param p;
+  p.name = name;
+  p.decl.type = ParamType::Float;
+  p.floats = {v};
+  return p;
+}
+
+Param color_param(const std::string& name, Vec3f c) {
+  Param p;
+  p.name = name;
+  p.decl.type = ParamType::Color;
+  p.floats = {c.x, c.y, c.z};
+  return p;
+}
+
+float luminance(Vec3f c) { return 0.3f * c.x + 0.6f * c.y + 0.1f * c.z; }  // Disney's tint weights
+
+float cone_roughness(float cone_degrees) {
+  const float a = std::clamp(cone_degrees, kMinConeDegrees, kMaxConeDegrees) * float(M_PI / 180);
+  return std::log(std::cos(a)) / std::log(0.5f);
+}
+
+RisSurface pxr_surface(RisParamReader& r) {
+  RisSurface s{"plastic", {}, r.color("diffuseColor", kPxrSurfaceDiffuseColor), {}};
+  const float kd = r.number("diffuseGain", 1);
+  s.params.params = {number_param("Ka", kd), number_param("Kd", kd), number_param("Ks", r.number("specularGain", 1)),
+                     number_param("roughness", r.number("specularRoughness", kPxrSurfaceSpecularRoughness)),
+                     color_param("specularcolor", r.color("specularFaceColor", {0, 0, 0}))};
+  return s;
+}
+
+RisSurface pxr_disney(RisParamReader& r) {
+  const Vec3f base = r.color("baseColor", kPxrDisneyBaseColor);
+  const float tint = std::clamp(r.number("specularTint", 0), 0.0f, 1.0f);
+  const float lum = luminance(base);
+  const Vec3f tint_color = lum > 0 ? base / lum : Vec3f{1, 1, 1};
+  const Vec3f specular_color = Vec3f{1, 1, 1} * (1 - tint) + tint_color * tint;
+  RisSurface s{"plastic", {}, base, {}};
+  s.params.params = {number_param("Ka", 1), number_param("Kd", 1),
+                     number_param("Ks", r.number("specular", kPxrDisneySpecular)),
+                     number_param("roughness", r.number("roughness", kPxrDisneyRoughness)),
+                     color_param("specularcolor", specular_color)};
+  return s;
+}
+
+RisSurface pxr_marschner_hair(RisParamReader& r) {
+  RisSurface s{"hair", {}, std::nullopt, {}};
+  // The diffuse colour, else the colour of a PxrHairColor feeding another input (its outputs
+  // are one colour here), else Cs as it is: darc's hair shader takes its colour from Cs.
+  s.color = r.optional_color("diffuseColor");
+  if (!s.color) s.color = r.any_pattern_color();
+  s.params.params = {number_param("Kd", r.number("diffuseGain", kHairKd)),
+                     number_param("Ks", r.number("specularGainR", kHairKs)),
+                     color_param("specularcolor", r.color("specularColorR", {1, 1, 1}))};
+  const float roughness =
+      r.has("specularConeAngleR") ? cone_roughness(r.number("specularConeAngleR", 0)) : kHairRoughness;
+  s.params.params.push_back(number_param("roughness", roughness));
+  return s;
+}
+
+}  // namespace
+
+RisSurfaceMapping map_ris_bxdf(const std::string& name, const ParamList& params, const RisPatterns& patterns) {
+  RisParamReader r(params, &patterns);
+  RisSurfaceMapping m;
+  if (name == "PxrSurface") {
+    m.surface = pxr_surface(r);
+  } else if (name == "PxrDisney") {
+    m.surface = pxr_disney(r);
+  } else if (name == "PxrDiffuse") {
+    m.surface = {"matte", {}, r.color("diffuseColor", kPxrDiffuseColor), {}};
+  } else if (name == "PxrConstant") {
+    m.surface = {"constant", {}, r.color("emitColor", {1, 1, 1}), {}};
+  } else if (name == "PxrMarschnerHair") {
+    m.surface = pxr_marschner_hair(r);
+  } else {
+    m.surface = {"defaultsurface", {}, std::nullopt, {}};
+    m.known = false;
+    return m;
+  }
+  m.surface.dropped = r.unread();
+  m.unevaluated = r.unevaluated();
+  return m;
+}
+
+void warn_ris_bxdf(const std::string& name, const RisSurfaceMapping& m, Diagnostics& diag, const SourceLoc& loc) {
+  if (!m.known) {
+    diag.warning_once("ris-bxdf:" + name, loc, "Bxdf", fmt::format("unknown Bxdf \"{}\": using defaultsurface", name));
+    return;
+  }
+  if (!m.surface.dropped.empty()) {
+    const std::string list = fmt::format("{}", fmt::join(m.surface.dropped, ", "));
+    diag.warning_once("ris-bxdf-dropped:" + name + ":" + list, loc, "Bxdf",
+                      fmt::format("{} is mapped to darc's {}: dropped {}", name, m.surface.shader, list));
+  }
+  for (const std::string& u : m.unevaluated)
+    diag.warning_once("ris-bxdf-pattern:" + name + ":" + u, loc, "Bxdf",
+                      fmt::format("{}: {} keeps its default colour", name, u));
+}
+
+}  // namespace darc

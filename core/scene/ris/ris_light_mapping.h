@@ -1,0 +1,35 @@
+// RenderMan 21+ Light requests mapped to darc's light shaders (shading/lights.h). A RIS light's
+// colour is intensity * 2^exposure * lightColor. PxrDistantLight -> distantlight along the
+// light's -z axis. PxrDomeLight -> ambientlight (no direction, no shadows; its environment map
+// is dropped). PxrRectLight (a unit square in its xy plane, emitting towards -z) and
+// PxrSphereLight (a sphere of diameter 1) are area lights; darc's area lights only draw their
+// geometry emissive and light nothing, so the rect becomes a spotlight at its centre with a
+// cosine (Lambertian) distribution over the -z hemisphere and the sphere a point light at its
+// centre, each with the light's power: exact far from the light, and the sphere's irradiance
+// is exact everywhere outside it. Their shapes are not drawn. README has the table.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/math/matrix.h"
+#include "parser/diagnostics.h"
+#include "parser/param_list.h"
+
+namespace darc {
+
+struct RisLightMapping {
+  std::string shader;                // a darc light shader; empty: no light (an unknown RIS light)
+  ParamList params;                  // intensity, lightcolor, from, to (in the light's space), cone parameters
+  bool casts_shadows = true;         // enableShadows (RenderMan's default: on)
+  std::vector<std::string> dropped;  // the request's parameters darc does not use
+  std::string approximation;         // how the light was approximated, for the warning; or empty
+};
+
+// `light_to_world` places the light (its scale sets an area light's size, hence its power).
+RisLightMapping map_ris_light(const std::string& name, const ParamList& params, const Matrix4& light_to_world);
+
+// The warnings of one Light request, once per distinct text (Diagnostics::warning_once).
+void warn_ris_light(const std::string& name, const RisLightMapping& m, Diagnostics& diag, const SourceLoc& loc);
+
+}  // namespace darc
