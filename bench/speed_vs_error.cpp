@@ -1,17 +1,16 @@
 // The speed-against-error benchmark: renders each scene in-process with the distance hider
 // (1x1, 2x2) and the stochastic hider (1x1 .. 16x16), and with --embree the Embree peer
 // (1x1 .. 16x16, when built), times the renders, compares every image with a cached high-sample
-// stochastic reference, and writes the CSV, the log-log plot and docs/performance.md (or, with
-// --report-stem 640, docs/performance-640.md with work per ray and memory; with --secondary,
+// stochastic reference, and writes the CSV and docs/performance.md (or, with --report-stem 640,
+// docs/performance-640.md with work per ray and memory; with --secondary,
 // docs/performance-secondary.md with the contribution-threshold sweeps of the scenes with
 // shadows, mirrors and glass). Run it through scripts/bench-speed-vs-error, which generates the
-// scenes.
+// scenes and draws each CSV's log-log plot with bench/plot_speed_vs_error.py.
 //
 //   speed_vs_error [options] NAME=FILE.rib...
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -26,7 +25,6 @@
 
 #include "bench/contribution_sweep.h"
 #include "bench/image_error.h"
-#include "bench/log_log_plot.h"
 #include "bench/process_memory.h"
 #include "bench/reference_cache.h"
 #include "bench/scene_loading.h"
@@ -385,71 +383,6 @@ RunDescription describe_run(const Options& o) {
   return run;
 }
 
-// One colour per scene (the first colours of matplotlib's "tab10", a familiar set that stays
-// distinguishable for common colour-vision deficiencies); the hider is told by the line style.
-std::array<float, 3> scene_color(size_t scene_index) {
-  static constexpr std::array<std::array<float, 3>, 6> kSceneColors{{{0.12f, 0.47f, 0.71f},
-                                                                     {1.00f, 0.50f, 0.05f},
-                                                                     {0.17f, 0.63f, 0.17f},
-                                                                     {0.84f, 0.15f, 0.16f},
-                                                                     {0.58f, 0.40f, 0.74f},
-                                                                     {0.55f, 0.34f, 0.29f}}};
-  return kSceneColors[scene_index % kSceneColors.size()];
-}
-
-std::vector<PlotSeries> plot_series(const std::vector<SceneReport>& scenes) {
-  std::vector<PlotSeries> series;
-  for (size_t i = 0; i < scenes.size(); ++i) {
-    for (const char* hider : {"stochastic", "distance", "embree"}) {
-      PlotSeries s;
-      s.label = scenes[i].name + " " + hider;
-      s.color = scene_color(i);
-      s.dashed = std::string(hider) == "distance";
-      // The Embree peer: solid like the stochastic hider it is, in the scene's colour halfway to
-      // white.
-      if (std::string(hider) == "embree")
-        for (float& c : s.color) c = 0.5f * (c + 1.0f);
-      for (const Measurement& m : scenes[i].settings)
-        if (m.hider == hider) s.points.push_back({m.seconds, m.error.rmse});
-      if (!s.points.empty()) series.push_back(std::move(s));
-    }
-  }
-  return series;
-}
-
-// The contribution-threshold sweeps: one line per scene and sweep through its thresholds in
-// order (0 first), RMSE against the reference over time; dashed: the distance hider.
-std::vector<PlotSeries> sweep_plot_series(const std::vector<SceneReport>& scenes) {
-  std::vector<PlotSeries> series;
-  for (size_t i = 0; i < scenes.size(); ++i) {
-    for (const ContributionSweep& sweep : scenes[i].contribution_sweeps) {
-      PlotSeries s;
-      s.label = scenes[i].name + " " + sweep.hider + " " + std::to_string(sweep.samples_per_axis) + "x" +
-                std::to_string(sweep.samples_per_axis);
-      s.color = scene_color(i);
-      s.dashed = sweep.hider == "distance";
-      for (const ThresholdMeasurement& m : sweep.rows) s.points.push_back({m.seconds, m.vs_reference.rmse});
-      if (!s.points.empty()) series.push_back(std::move(s));
-    }
-  }
-  return series;
-}
-
-bool write_plot(const std::string& path, const std::vector<PlotSeries>& series, const std::string& title) {
-  PlotText text;
-  text.title = title;
-  PlotResult plot = write_log_log_plot(path, series, text);
-  if (!plot.ok) {
-    std::fprintf(stderr, "speed_vs_error: error: %s\n", plot.error.c_str());
-    return false;
-  }
-  if (!plot.text_drawn)
-    std::fprintf(stderr, "speed_vs_error: warning: OpenImageIO found no font; the plot has no labels "
-                         "(install fonts-dejavu-core)\n");
-  std::fprintf(stderr, "wrote %s\n", path.c_str());
-  return true;
-}
-
 bool write_outputs(const Options& o, const std::vector<SceneReport>& scenes) {
   std::error_code ec;
   fs::create_directories(o.out_dir, ec);
@@ -493,16 +426,6 @@ bool write_outputs(const Options& o, const std::vector<SceneReport>& scenes) {
                [&](std::ostream& out) { write_performance_640_markdown(out, describe_run(o), scenes); });
   }
 
-  const std::string scenes_label = o.secondary ? "secondary-ray" : o.size;
-  ok = write_plot((fs::path(o.out_dir) / ("speed-vs-error" + suffix + ".png")).string(), plot_series(scenes),
-                  "darc: RMSE against render time (" + scenes_label +
-                      " scenes; solid: stochastic, dashed: distance" + (o.embree ? ", pale: Embree)" : ")")) &&
-       ok;
-  if (o.secondary)
-    ok = write_plot((fs::path(o.out_dir) / ("speed-vs-error" + suffix + "-pruning.png")).string(),
-                    sweep_plot_series(scenes),
-                    "darc: contribution thresholds 0, 1e-4 .. 0.1 along each line (RMSE against the reference)") &&
-         ok;
   return ok;
 }
 
@@ -515,7 +438,7 @@ int main(int argc, char** argv) {
   CLI::App app{"speed against error: both hiders against a stochastic reference"};
   app.add_option("--size", o.size, "label of the scene size (small|large), for the report");
   app.add_option("--cache", o.cache_dir, "directory of cached reference images");
-  app.add_option("--out-dir", o.out_dir, "where speed-vs-error.csv, .png and performance.md go");
+  app.add_option("--out-dir", o.out_dir, "where speed-vs-error.csv and performance.md go");
   app.add_option("--reference-samples", o.reference.samples_per_axis, "N of the N x N reference")->check(
       CLI::Range(1, 256));
   app.add_option("--max-runs", o.max_runs, "most runs of a cheap setting (the minimum time is kept)")
@@ -529,13 +452,13 @@ int main(int argc, char** argv) {
   app.add_flag("!--no-variants", o.variants, "skip the coverage-model and sort-interval sweeps");
   app.add_flag("--embree", o.embree, "also measure the Embree peer (needs a build with Embree)");
   app.add_option("--report-stem", o.report_stem,
-                 "write performance-STEM.md, speed-vs-error-STEM.csv/.png with work per ray and memory");
+                 "write performance-STEM.md, speed-vs-error-STEM.csv with work per ray and memory");
   app.add_flag("--quick", o.quick, "label the report as the quick smoke run");
   app.add_option("--accelerator", o.accelerator, "darc's acceleration structure (default: the renderer's)")
       ->check(CLI::IsMember({"bvh", "grid"}));
   app.add_flag("--secondary", o.secondary,
                "the secondary-ray report: references with every secondary ray traced, the contribution-threshold "
-               "sweeps, performance-secondary.md, speed-vs-error-secondary(-pruning).csv/.png");
+               "sweeps, performance-secondary.md, speed-vs-error-secondary(-pruning).csv");
   app.add_option("--contribution-threshold", o.contribution_threshold,
                  "contribution threshold of the measured renders (default: the renderer's)")
       ->check(CLI::Range(0.0f, 1.0f));

@@ -7,7 +7,7 @@
 #include <optional>
 #include <utility>
 
-#include "parser/extended_regex.h"
+#include "parser/condition_pattern.h"
 
 namespace darc {
 
@@ -143,7 +143,7 @@ class ConditionEvaluator {
   static bool compare(Compare op, const Value& a, const Value& b) {
     if (op == Compare::Match) {
       std::string error;
-      const std::optional<ExtendedRegex> re = ExtendedRegex::compile(to_text(b), error);
+      const std::optional<ConditionPattern> re = ConditionPattern::compile(to_text(b), error);
       if (!re) fail(fmt::format("pattern {}: {}", describe_value(b), error));
       return re->search(to_text(a));
     }

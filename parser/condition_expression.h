@@ -8,7 +8,8 @@
 //   $(expr)                   the variable whose name is the string value of expr
 //   defined(user:pass)        1 when the variable has a value (the `$` is optional)
 //   concat(a, b, ...)         the strings joined (numbers formatted as %g would)
-//   a =~ 'regex'              1 when the egrep-style regular expression matches part of a
+//   a =~ 'regex'              1 when the egrep regular expression matches part of a (RE2's
+//                             POSIX syntax, parser/condition_pattern.h)
 //   == != < <= > >=           numbers numerically, strings by byte order; a string that spells
 //                             a number compares as that number with a number
 //   + - * /  ! && ||  ( )     arithmetic on numbers, C's logic and precedence

@@ -7,7 +7,7 @@
 #include <map>
 #include <string>
 
-#include "parser/extended_regex.h"
+#include "parser/condition_pattern.h"
 
 namespace darc {
 namespace {
@@ -109,12 +109,15 @@ TEST(ConditionExpression, PatternMatching) {
 
 TEST(ConditionExpression, WhatCannotBeEvaluatedSaysWhy) {
   for (const char* expression : {"$Frame ==", "$Frame = 12", "foo(1)", "$user:color == 1", "'a' + 1", "1 / 0",
-                                 "'shadow", "$user:pass =~ 'a{2}'", "$Frame == 12 junk", "$user:pass < 3"}) {
+                                 "'shadow", "$user:pass =~ 'sha('", "$Frame == 12 junk", "$user:pass < 3"}) {
     const ConditionOutcome o = eval(expression);
     EXPECT_FALSE(o.evaluated()) << expression;
     EXPECT_FALSE(o.failure.empty()) << expression;
   }
   EXPECT_NE(eval("$user:color == 1").failure.find("3 values"), std::string::npos) << eval("$user:color == 1").failure;
+  const std::string bad_pattern = eval("$user:pass =~ 'sha('").failure;
+  EXPECT_NE(bad_pattern.find("pattern 'sha(': missing ): sha("), std::string::npos)
+      << "the pattern, then RE2's reason quoting the offending part: " << bad_pattern;
 }
 
 TEST(ConditionExpression, OperandsThatCannotMatterAreNotEvaluated) {
@@ -132,12 +135,12 @@ TEST(ConditionExpression, DeepNestingIsRefusedNotACrash) {
 
 bool regex_finds(std::string_view pattern, std::string_view subject) {
   std::string error;
-  const std::optional<ExtendedRegex> re = ExtendedRegex::compile(pattern, error);
+  const std::optional<ConditionPattern> re = ConditionPattern::compile(pattern, error);
   EXPECT_TRUE(re.has_value()) << pattern << ": " << error;
   return re && re->search(subject);
 }
 
-TEST(ExtendedRegex, EgrepSyntax) {
+TEST(ConditionPattern, EgrepSyntax) {
   EXPECT_TRUE(regex_finds("b+", "abbc"));
   EXPECT_FALSE(regex_finds("^b", "abc"));
   EXPECT_TRUE(regex_finds("c$", "abc"));
@@ -154,23 +157,49 @@ TEST(ExtendedRegex, EgrepSyntax) {
   EXPECT_TRUE(regex_finds("x*", ""));
 }
 
-TEST(ExtendedRegex, PathologicalPatternsStayLinear) {
+// What RE2's POSIX syntax adds to the egrep subset the hand-written matcher took before.
+TEST(ConditionPattern, BoundedRepetitionPosixClassesAndByteEscapes) {
+  EXPECT_TRUE(regex_finds("^a{2}$", "aa"));
+  EXPECT_FALSE(regex_finds("^a{2}$", "aaa"));
+  EXPECT_TRUE(regex_finds("^_[0-9]{2,4}$", "_123"));
+  EXPECT_FALSE(regex_finds("^_[0-9]{2,4}$", "_12345"));
+  EXPECT_TRUE(regex_finds("^[[:alpha:]]+[[:digit:]]$", "pass7"));
+  EXPECT_FALSE(regex_finds("[[:space:]]", "no_space"));
+  EXPECT_TRUE(regex_finds("a\\tb", "a\tb")) << "C escapes stand for their byte";
+  EXPECT_FALSE(regex_finds("a\\tb", "atb"));
+  EXPECT_TRUE(regex_finds("\\x41\\101", "AA")) << "hexadecimal and octal escapes";
+}
+
+// The subject is bytes, not lines or UTF-8 characters, as before.
+TEST(ConditionPattern, SubjectIsMatchedByteByByte) {
+  EXPECT_TRUE(regex_finds("a.b", "a\nb")) << "'.' is any byte, a newline too";
+  EXPECT_FALSE(regex_finds("^b", "a\nb")) << "^ is the start of the subject, not of a line";
+  EXPECT_FALSE(regex_finds("a$", "a\nb")) << "$ is the end of the subject, not of a line";
+  EXPECT_TRUE(regex_finds("^..$", "\xc3\xa9")) << "a two-byte UTF-8 character is two bytes";
+  EXPECT_TRUE(regex_finds("^[^a]$", "\xff")) << "any byte, valid UTF-8 or not";
+}
+
+TEST(ConditionPattern, PathologicalPatternsStayLinear) {
   // (a*)*b against many a's takes exponential time with backtracking; here it is one pass.
   const std::string many_a(20000, 'a');
   EXPECT_FALSE(regex_finds("(a*)*b", many_a));
   EXPECT_TRUE(regex_finds("(a|aa)*$", many_a));
-  EXPECT_TRUE(regex_finds("a**+?", "b")) << "stacked quantifiers fold into one";
+  EXPECT_TRUE(regex_finds("a**+?", "b")) << "stacked quantifiers are one quantifier";
+  // As deep as the length cap allows: RE2 neither recurses over the nesting nor refuses it.
+  const std::string deep = std::string(499, '(') + "a" + std::string(499, ')');
+  EXPECT_TRUE(regex_finds(deep, "xay"));
 }
 
-TEST(ExtendedRegex, UnsupportedOrMalformedPatternsAreRefused) {
-  for (const char* pattern : {"a{2}", "[[:alpha:]]", "(a", "a)", "[a", "*a", "\\1", "[z-a]"}) {
+TEST(ConditionPattern, UnsupportedOrMalformedPatternsAreRefused) {
+  for (const char* pattern : {"(a", "a)", "[a", "*a", "\\1", "[z-a]", "a{1001}", "((a{100}){100}){100}", "\\d", "\\b",
+                              "(?i)a", "[a-c-e]", "a\\"}) {
     std::string error;
-    EXPECT_FALSE(ExtendedRegex::compile(pattern, error).has_value()) << pattern;
+    EXPECT_FALSE(ConditionPattern::compile(pattern, error).has_value()) << pattern;
     EXPECT_FALSE(error.empty()) << pattern;
   }
   std::string error;
-  EXPECT_FALSE(ExtendedRegex::compile(std::string(100, '(') + std::string(100, ')'), error).has_value());
-  EXPECT_FALSE(ExtendedRegex::compile(std::string(5000, 'a'), error).has_value());
+  EXPECT_FALSE(ConditionPattern::compile(std::string(5000, 'a'), error).has_value());
+  EXPECT_NE(error.find("longer than"), std::string::npos) << error;
 }
 
 }  // namespace

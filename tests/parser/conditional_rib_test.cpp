@@ -94,6 +94,18 @@ IfBegin "$user:pass =~ 'fill$'" Sides 1 Else Sides 2 IfEnd
   EXPECT_EQ(sides_seen(*r), (std::vector<int>{1, 2}));
 }
 
+TEST(ConditionalRib, AMalformedPatternIsAWarningAtItsRequest) {
+  auto r = parse_rib(R"RIB(Attribute "user" "string pass" ["shadow_key"]
+IfBegin "$user:pass =~ '^shadow(_key'" Sides 1 Else Sides 2 IfEnd
+)RIB");
+  EXPECT_TRUE(r->ok);
+  const auto warnings = r->warnings();
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].loc.str(), "test.rib:2:1");
+  EXPECT_TRUE(contains(warnings[0].message, "missing ): ^shadow(_key")) << warnings[0].message;
+  EXPECT_EQ(sides_seen(*r), std::vector<int>{1}) << "the branch is taken, as for any unevaluable condition";
+}
+
 TEST(ConditionalRib, AnUnevaluableConditionWarnsOnceAndTakesTheFirstBranchOnly) {
   auto r = parse_rib(R"RIB(FrameBegin 1
 IfBegin "$Frame == 1 junk" Sides 1 ElseIf "1" Sides 2 Else Sides 2 IfEnd
