@@ -127,9 +127,18 @@ void set_frame_memory_limit(const AppOptions& o, FrameOverrides& overrides) {
   overrides.memory_limit_source = "the limit is " + format_bytes(limit.bytes) + ", from " + limit.source;
 }
 
-// --procedural-path and --procedural-timeout.
+// The user's procedural folders (--procedural-path, then DARC_PROCEDURAL_PATH), --trust-rib and
+// --procedural-timeout. A folder of the variable that does not exist is reported and left out
+// (--procedural-path checks its own as a usage error).
 void configure_procedurals(const AppOptions& o, RibParser& parser) {
-  parser.set_procedural_folders(o.procedural_paths);
+  std::vector<std::string> folders = o.procedural_paths;
+  for (const std::string& dir : o.procedural_env_paths) {
+    std::error_code ec;
+    if (fs::is_directory(dir, ec)) folders.push_back(dir);
+    else std::fprintf(stderr, "darc: warning: DARC_PROCEDURAL_PATH: \"%s\" is not a folder: ignored\n", dir.c_str());
+  }
+  parser.set_procedural_folders(folders);
+  parser.set_trust_rib(o.trust_rib);
   RunProgramLimits limits;
   limits.time_limit = std::chrono::milliseconds(std::llround(o.procedural_timeout_seconds * 1000));
   parser.set_run_program_limits(limits);

@@ -295,10 +295,10 @@ void RibParser::option(RequestReader& args, const SourceLoc& loc) {
       // Relative folders are taken from the file that names them, so that a scene and its
       // generators move together.
       const fs::path base = include_stack_.empty() ? fs::path() : fs::path(include_stack_.back()).parent_path();
-      std::vector<std::string> dirs = search_path(*procedural, procedural_path_, procedural_folders_);
+      std::vector<std::string> dirs = search_path(*procedural, procedural_search_path(), procedural_folders_);
       for (std::string& dir : dirs)
         if (fs::path(dir).is_relative()) dir = (base / dir).string();
-      procedural_path_ = std::move(dirs);
+      set_procedural_search_path(dirs, loc);
     }
   }
   target_.option(category, params, loc);
@@ -431,14 +431,18 @@ std::optional<RecordedArchive> RibParser::record_archive(std::string text, const
   child.inline_stack_ = inline_stack_;
   child.conditions_ = conditions_;
   child.procedural_path_ = procedural_path_;
+  child.procedural_path_set_ = procedural_path_set_;
   child.procedural_folders_ = procedural_folders_;
+  child.trust_rib_ = trust_rib_;
   child.run_program_limits_ = run_program_limits_;
   child.parse_text(std::move(text), path);
   // Past the message caps some errors were counted but not recorded: a replay would lose them.
   if (!replayable || errors_kept != recorded_diag.error_count()) return std::nullopt;
   // Conditional RIB and inline archives depend on (or change) this parser's state of the
   // moment ($Frame, the archives defined so far): such an archive is parsed at each read.
-  if (child.read_parser_state_ || child.procedural_path_ != procedural_path_) return std::nullopt;
+  if (child.read_parser_state_ || child.procedural_path_set_ != procedural_path_set_ ||
+      child.procedural_path_ != procedural_path_)
+    return std::nullopt;
   archive.declarations_after = std::move(child.declared_);
   archive.search_path_after = std::move(child.archive_path_);
   return archive;

@@ -54,15 +54,21 @@ class RibParser {
   // one cache serves every parser of a run.
   void use_archive_cache(ArchiveCache* cache) { archive_cache_ = cache; }
 
-  // Procedurals (rib_parser_procedural.cpp). The folders RunProgram may start programs from
-  // besides those of Option "searchpath" "procedural" (--procedural-path); "@" in that option
-  // stands for them.
-  // Relative folders are taken from the current directory.
+  // Procedurals (rib_parser_procedural.cpp). The folders the user allows RunProgram to start
+  // programs from (--procedural-path, DARC_PROCEDURAL_PATH): the procedural search path until the
+  // RIB sets one, "@" in Option "searchpath" "procedural", and the most that option may keep
+  // (procedural_folders.h). Relative folders are taken from the current directory.
   void set_procedural_folders(const std::vector<std::string>& folders);
+  // --trust-rib: the RIB's procedural search path is kept as it says, even where it leaves the
+  // user's folders (each such folder is reported once, as a warning at its Option).
+  void set_trust_rib(bool trusted) { trust_rib_ = trusted; }
   // The time and output limits of one RunProgram request (--procedural-timeout).
   void set_run_program_limits(const RunProgramLimits& limits) { run_program_limits_ = limits; }
-  // The procedural search path currently in effect (from Option "searchpath" "procedural").
-  const std::vector<std::string>& procedural_search_path() const { return procedural_path_; }
+  // The procedural search path currently in effect: the user's folders until the RIB sets
+  // Option "searchpath" "procedural", then what was kept of it.
+  const std::vector<std::string>& procedural_search_path() const {
+    return procedural_path_set_ ? procedural_path_ : procedural_folders_;
+  }
 
  private:
   // What is being read: one file's text or one inline archive's body. Conditional blocks must
@@ -89,6 +95,8 @@ class RibParser {
   void archive_begin(RequestReader& args, const SourceLoc& loc);
   // Procedural, Procedural2 (rib_parser_procedural.cpp).
   void procedural(RequestReader& args, const std::string& request, const SourceLoc& loc);
+  // Option "searchpath" "procedural": `folders` (expanded, absolute) narrowed to the user's.
+  void set_procedural_search_path(const std::vector<std::string>& folders, const SourceLoc& loc);
   void run_procedural_program(const std::string& program, const std::string& data, double detail, const SourceLoc& loc);
   // Reads a procedural's RIB (`read` calls the parser) in the graphics state of its request.
   void expand_procedural(const std::function<void()>& read, const SourceLoc& loc);
@@ -129,8 +137,10 @@ class RibParser {
   // Conditional RIB, inline archives or procedurals were used (the archive cache does not
   // replay such text: it depends on the moment, or starts programs).
   bool read_parser_state_ = false;
-  std::vector<std::string> procedural_path_;     // Option "searchpath" "procedural", absolute
-  std::vector<std::string> procedural_folders_;  // --procedural-path
+  std::vector<std::string> procedural_path_;     // what was kept of Option "searchpath" "procedural"
+  bool procedural_path_set_ = false;             // the RIB has set procedural_path_
+  std::vector<std::string> procedural_folders_;  // the user's: --procedural-path, DARC_PROCEDURAL_PATH
+  bool trust_rib_ = false;                       // --trust-rib
   RunProgramLimits run_program_limits_;
 };
 
