@@ -101,21 +101,37 @@ nlohmann::json memory_json(const Scene& scene) {
           {"peak_resident_bytes", peak_resident_bytes()}};
 }
 
+// The memory the whole run may use: --memory-limit, else what Linux allows; nullopt for none.
+std::optional<MemoryLimit> run_memory_limit(const AppOptions& o) {
+  if (o.memory_limit_bytes) {
+    if (*o.memory_limit_bytes == 0) return std::nullopt;  // --memory-limit none
+    return MemoryLimit{*o.memory_limit_bytes, "--memory-limit"};
+  }
+  std::optional<MemoryLimit> system = memory_limit(this_process_memory_inputs());
+  if (system) system->source += "; --memory-limit changes it";
+  return system;
+}
+
+// No RIB text (an input, an archive, a .gz once decompressed) may be larger than the memory the
+// run may use: it could not be held, and a file that never ends or a gzip bomb stops here.
+std::uint64_t text_limit_bytes(const AppOptions& o) {
+  const std::optional<MemoryLimit> limit = run_memory_limit(o);
+  return limit ? limit->bytes : 0;
+}
+
+void set_text_limit(const AppOptions& o, RibParser& parser) {
+  if (const std::optional<MemoryLimit> limit = run_memory_limit(o))
+    parser.set_text_limit(limit->bytes, "the memory limit, from " + limit->source);
+}
+
 // The part of the memory limit a frame's geometry may take (SceneBuilder checks its estimate):
 // what the process may hold, less what it holds now and twice the largest input file (the parser
 // holds a file's text while its frames are built; a gzip file's text is larger than the file,
 // which the factor of two roughly covers).
 void set_frame_memory_limit(const AppOptions& o, FrameOverrides& overrides) {
-  MemoryLimit limit;
-  if (o.memory_limit_bytes) {
-    if (*o.memory_limit_bytes == 0) return;  // --memory-limit none
-    limit = MemoryLimit{*o.memory_limit_bytes, "--memory-limit"};
-  } else if (std::optional<MemoryLimit> system = memory_limit(this_process_memory_inputs())) {
-    limit = *system;
-    limit.source += "; --memory-limit changes it";
-  } else {
-    return;
-  }
+  const std::optional<MemoryLimit> process_limit = run_memory_limit(o);
+  if (!process_limit) return;
+  const MemoryLimit& limit = *process_limit;
   const MemoryLimitInputs now = this_process_memory_inputs();
   uint64_t text = 0;
   for (const std::string& in : o.inputs) {
@@ -168,6 +184,7 @@ int run_render_session(const AppOptions& o) {
     RibWriter writer(std::cout);
     RibParser parser(writer, diag);
     configure_procedurals(o, parser);
+    set_text_limit(o, parser);
     for (const std::string& in : o.inputs) {
       if (diag.aborted()) break;
       parser.parse_file(in);
@@ -183,7 +200,7 @@ int run_render_session(const AppOptions& o) {
   }
   const ColorConfig& colors = *lookup.config;
   ProgressReporter progress(o.progress || !o.quiet, isatty(STDERR_FILENO) != 0);
-  if (o.progress || !o.quiet) progress.set_frames_in_run(count_frames(o.inputs, o.frames).value_or(0));
+  if (o.progress || !o.quiet) progress.set_frames_in_run(count_frames(o.inputs, o.frames, text_limit_bytes(o)).value_or(0));
   nlohmann::json stats_frames = nlohmann::json::array();
   // "--stats stats/f.####.json": each frame's entry goes to a file of its own as soon as the frame
   // is written, so a sequence stopped part-way (a farm task cancelled) keeps the stats it made.
@@ -311,6 +328,7 @@ int run_render_session(const AppOptions& o) {
   RibParser parser(builder, diag);
   if (o.archive_cache) parser.use_archive_cache(&archives);
   configure_procedurals(o, parser);
+  set_text_limit(o, parser);
   for (const std::string& in : o.inputs) {
     if (diag.aborted()) break;
     parser.parse_file(in);

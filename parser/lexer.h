@@ -81,8 +81,4 @@ class Lexer {
   Token peeked_;
 };
 
-// Reads a whole RIB file into `text`: `-` is standard input, names ending in ".gz" are
-// decompressed with zlib. Returns false and sets `error` when the file cannot be read.
-bool read_rib_text(const std::string& path, std::string& text, std::string& error);
-
 }  // namespace darc

@@ -23,6 +23,7 @@
 #include "parser/diagnostics.h"
 #include "parser/inline_archives.h"
 #include "parser/request_reader.h"
+#include "parser/rib_file.h"
 #include "parser/ri_target.h"
 #include "parser/run_program.h"
 
@@ -48,6 +49,13 @@ class RibParser {
   // off, every ReadArchive, DelayedReadArchive and RunProgram is an error, no file is looked up
   // or opened and no program started: for input that must not reach the system (fuzzing).
   void allow_archive_files(bool allowed) { archive_files_allowed_ = allowed; }
+
+  // The most bytes of text one file (an input, an archive, a .gz once decompressed) may give;
+  // 0 (the default): no limit. `source` says where the limit comes from, for the message.
+  void set_text_limit(std::uint64_t bytes, const std::string& source) {
+    text_limits_.max_bytes = bytes;
+    text_limits_.max_bytes_source = source;
+  }
 
   // Parse each archive once and replay it from `cache` at later ReadArchives of it (nullptr,
   // the default: every ReadArchive reads and parses its file). The cache must outlive the parser;
@@ -112,9 +120,11 @@ class RibParser {
   // Keeps conditions_ in step with the block requests the target accepted.
   void track_block(const std::string& request);
   std::string resolve_archive(const std::string& name) const;
+  // Reads an archive's text (a regular file, within the text limit); a RibError says why not.
+  std::string read_archive_text(const std::string& name, const std::string& path) const;
   // ReadArchive through the cache: replays the file's entry, or parses the file into one (or,
   // for an archive whose parse cannot be replayed, parses it straight into the target).
-  void include_cached_archive(const std::string& path, const std::string& canonical);
+  void include_cached_archive(const std::string& name, const std::string& path, const std::string& canonical);
   // Parses `text` of the archive `path` into a recording; nullopt when the recording could not
   // reproduce the parse (an ErrorHandler inside, or more errors than were shown).
   std::optional<RecordedArchive> record_archive(std::string text, const std::string& path);
@@ -132,6 +142,7 @@ class RibParser {
   TextScope* scope_ = nullptr;  // the innermost text being read
   bool archive_files_allowed_ = true;
   ArchiveCache* archive_cache_ = nullptr;
+  RibReadLimits text_limits_;  // for the command line's files; archives are regular files only too
   // While this parser records an archive for the cache: the files the recording depends on.
   std::vector<FileStamp>* recorded_files_ = nullptr;
   // Conditional RIB, inline archives or procedurals were used (the archive cache does not

@@ -5,6 +5,9 @@
 // error reaches darc's, marked.
 #include "render/render_test_util.h"
 
+#include <dlfcn.h>
+#include <zlib.h>
+
 namespace darc::test {
 namespace {
 
@@ -103,6 +106,28 @@ TEST(CliProcedural, TheEnvironmentVariableAllowsFolders) {
   EXPECT_EQ(without.exit_code, kExitSceneError) << without.err;
   EXPECT_NE(without.err.find("program \"one.sh\" is not in the procedural search path"), std::string::npos)
       << without.err;
+}
+
+// DynamicLoad names native code; darc never loads it. The dynamic loader reports every library it
+// opens (LD_DEBUG=files), dlopen's included: a real library (zlib's, copied) must not be among
+// them, even with --trust-rib.
+TEST(CliProcedural, DynamicLoadNeverLoadsTheLibrary) {
+  ScratchDir dir("dynamicload");
+  Dl_info info{};
+  ASSERT_NE(::dladdr(reinterpret_cast<void*>(&zlibVersion), &info), 0);
+  fs::copy_file(info.dli_fname, dir / "hair.so");
+  write_file(dir / "scene.rib", frame_with("Procedural \"DynamicLoad\" [\"" + (dir / "hair.so").string() +
+                                           "\" \"1 2\"] [-1 1 -1 1 -1 1]\n"));
+  RunOptions traced;
+  traced.environment = "LD_DEBUG=files";
+  RunResult r = run_darc(dir.path(), "--trust-rib scene.rib", traced);
+  EXPECT_EQ(r.exit_code, kExitOk) << r.err;
+  EXPECT_NE(r.err.find("scene.rib:7:1: warning: Procedural: DynamicLoad is not supported: compiled procedurals "
+                       "cannot be loaded; skipped"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("file="), std::string::npos) << "the loader's trace is there: " << r.err;
+  EXPECT_EQ(r.err.find("hair.so ["), std::string::npos) << "the library was loaded: " << r.err;
 }
 
 TEST(CliProcedural, HelpListsTheTrustFlagAndTheVariable) {
