@@ -73,6 +73,24 @@ std::string describe(const Token& token) {
   return "token";
 }
 
+std::optional<std::string_view> leading_word(std::string_view text) {
+  size_t pos = 0;
+  while (pos < text.size()) {
+    const unsigned char c = text[pos];
+    if (is_space(c)) {
+      ++pos;
+    } else if (c == '#') {
+      while (pos < text.size() && text[pos] != '\n' && text[pos] != '\r') ++pos;
+    } else {
+      break;
+    }
+  }
+  if (pos == text.size()) return std::nullopt;
+  const unsigned char c = text[pos];
+  if (!kTokenByte[c] || starts_number(c)) return std::string_view();
+  return text.substr(pos, token_end(text, pos) - pos);
+}
+
 Lexer::Lexer(std::string text, std::shared_ptr<const std::string> file)
     : storage_(std::make_shared<const std::string>(std::move(text))), text_(*storage_), file_(std::move(file)) {}
 

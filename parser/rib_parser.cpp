@@ -388,6 +388,13 @@ std::string RibParser::read_archive_text(const std::string& name, const std::str
   std::string reason;
   if (!read_rib_text(path, text, reason, limits))
     throw RibError(fmt::format("cannot open archive \"{}\": {}", name, reason));
+  // A file that is not RIB (a password file, a key, a shell profile) would come out a token at
+  // a time in "unknown request" messages: it is refused whole, and nothing of it is quoted.
+  const std::optional<std::string_view> first = leading_word(text);
+  if (first && !find_known_request(*first) && !find_request_handler(*first))
+    throw RibError(fmt::format("cannot read archive \"{}\": it does not begin with a RIB request, so it is not RIB "
+                               "text (or is binary RIB, which is not supported); nothing of it is read",
+                               name));
   return text;
 }
 

@@ -1,7 +1,9 @@
 // End-to-end: the files a hostile RIB can make darc read. An archive that is not a regular file
 // (/dev/zero, /dev/stdin, a named pipe, a directory, a file of /proc) is an error at its request,
 // never a hang; no text, a .gz inflated included, may pass the memory limit (a gzip bomb stops
-// there); and a named pipe given on the command line is read once, by the parser.
+// there); a file that is not RIB is refused whole and nothing of it reaches standard error or the
+// image's metadata, and what messages quote of a RIB is bounded; a named pipe given on the
+// command line is read once, by the parser.
 #include "render/render_test_util.h"
 
 #include <fcntl.h>
@@ -40,6 +42,47 @@ TEST(CliHostileReads, ArchivesThatAreNotRegularFilesAreLocatedErrors) {
     ASSERT_TRUE(header);
     EXPECT_EQ(header->get_int_attribute("darc:errors"), 1);
   }
+}
+
+// A password file named as an archive: one error, which quotes nothing of it, in the messages and
+// in the image (darc:first_error).
+TEST(CliHostileReads, AFileThatIsNotRibLeaksNothing) {
+  ScratchDir dir("not-rib");
+  write_file(dir / "passwd", "root:x:0:0:root:/root:/bin/bash\nalice:x:1000:1000::/home/alice:/bin/sh\n");
+  write_file(dir / "scene.rib", frame_reading("passwd"));
+  RunResult r = run_darc(dir.path(), "scene.rib");
+  EXPECT_EQ(r.exit_code, kExitSceneError) << r.err;
+  EXPECT_NE(r.err.find("scene.rib:7:1: error: ReadArchive: cannot read archive \"passwd\": it does not begin with a "
+                       "RIB request"),
+            std::string::npos)
+      << r.err;
+  const std::optional<OIIO::ImageSpec> header = read_image_header(dir / "out.exr");
+  ASSERT_TRUE(header);
+  const std::string first_error = header->get_string_attribute("darc:first_error");
+  EXPECT_NE(first_error.find("cannot read archive"), std::string::npos) << first_error;
+  for (const char* secret : {"root", "alice", "/bin/"}) {
+    EXPECT_EQ(r.err.find(secret), std::string::npos) << r.err;
+    EXPECT_EQ(first_error.find(secret), std::string::npos) << first_error;
+  }
+}
+
+// A RIB whose error quotes a long value: the message and the image keep a short excerpt of it.
+TEST(CliHostileReads, MessagesQuoteAShortExcerptOfTheRib) {
+  ScratchDir dir("excerpt");
+  const std::string value = "HEAD" + std::string(300, 'x') + "MIDDLE" + std::string(300, 'y') + "TAIL";
+  write_file(dir / "part.rib", "Basis \"" + value + "\" 3 \"bezier\" 3\n");
+  write_file(dir / "scene.rib", frame_reading("part.rib"));
+  RunResult r = run_darc(dir.path(), "scene.rib");
+  EXPECT_EQ(r.exit_code, kExitSceneError) << r.err;
+  EXPECT_NE(r.err.find("part.rib:1:1: error: Basis: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("HEAD"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("MIDDLE"), std::string::npos) << r.err;
+  const std::optional<OIIO::ImageSpec> header = read_image_header(dir / "out.exr");
+  ASSERT_TRUE(header);
+  const std::string first_error = header->get_string_attribute("darc:first_error");
+  EXPECT_NE(first_error.find("HEAD"), std::string::npos) << first_error;
+  EXPECT_EQ(first_error.find("MIDDLE"), std::string::npos) << first_error;
+  EXPECT_LT(first_error.size(), 300u) << first_error;
 }
 
 // Writes `bytes` spaces as a gzip file (about 1 kB on disk per MiB of text).
