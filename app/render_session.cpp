@@ -324,6 +324,18 @@ int run_render_session(const AppOptions& o) {
   overrides.yres = o.yres;
   overrides.pixel_samples = o.pixel_samples;
   set_frame_memory_limit(o, overrides);
+  // -o is the user's; without it, the RIB's Display names stay in the working folder unless the
+  // user trusts the RIB.
+  if (o.output.empty() && !o.trust_rib) {
+    std::error_code ec;
+    const fs::path here = fs::canonical(fs::current_path(ec), ec);
+    if (ec) {
+      std::fprintf(stderr, "darc: error: cannot resolve the working folder (%s), where Display names must stay\n",
+                   ec.message().c_str());
+      return kExitRenderError;
+    }
+    overrides.display_folder = here.string();
+  }
   SceneBuilder builder(diag, cb, overrides);
   RibParser parser(builder, diag);
   if (o.archive_cache) parser.use_archive_cache(&archives);

@@ -33,6 +33,10 @@ struct FrameOverrides {
   // 0: no limit. The source says where the limit comes from, for the message.
   uint64_t memory_limit_bytes = 0;
   std::string memory_limit_source;
+  // The folder Display names must stay inside (canonical; core/display_confinement.h); a name
+  // that leaves it is an error at the Display request, and the frame is written under the name's
+  // last component in this folder. Empty: anywhere (-o names the output, or --trust-rib).
+  std::string display_folder;
 };
 
 class SceneBuilder : public RiTarget {
@@ -167,6 +171,9 @@ class SceneBuilder : public RiTarget {
   void note_geometry(uint64_t id);
   // Options may only change outside the world block.
   bool option_allowed(const char* request, const SourceLoc& loc);
+  // The Display name to keep: `name`, or when it leaves FrameOverrides::display_folder, an error
+  // at the request and the name the frame is written to instead.
+  std::string confined_display_name(const std::string& name, const SourceLoc& loc);
   uint32_t make_material(const SourceLoc& loc);
   bool object_space_left_handed() const;
   Vec3f to_world(const float* p) const;
