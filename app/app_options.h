@@ -41,6 +41,9 @@ struct AppOptions {
   // user's folders and their Display names may leave the working folder.
   bool trust_rib = false;
   double procedural_timeout_seconds = 60;  // --procedural-timeout: per RunProgram request
+  // --disk-reserve: the free space an image write must leave on its file system (0: none).
+  // Unset: app/disk_reserve.h's default, 1 % of the file system up to 1 GiB.
+  std::optional<uint64_t> disk_reserve_bytes;
 };
 
 // Exit codes (DESIGN.md).

@@ -109,6 +109,10 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
                "I trust these RIB files: their Option \"searchpath\" \"procedural\" may add folders outside "
                "--procedural-path (each is reported), and their Display names may write outside the working "
                "folder (docs/threat-model.md)");
+  std::string disk_reserve;
+  app.add_option("--disk-reserve", disk_reserve,
+                 "free space an image write must leave on its file system, e.g. 5G or 0 (default: 1 % of the "
+                 "file system, at most 1G); a write that would leave less is refused");
   std::string memory_limit;
   app.add_option("--memory-limit", memory_limit,
                  "memory darc may use, e.g. 8G or 500M, or none (default: what the machine, the cgroup and "
@@ -123,6 +127,12 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
       if (!o.memory_limit_bytes || *o.memory_limit_bytes == 0)
         throw CLI::ValidationError("--memory-limit", "expected a size such as 8G, 500M or 123456 (bytes), or none, "
                                                      "found \"" + memory_limit + "\"");
+    }
+    if (!disk_reserve.empty()) {
+      o.disk_reserve_bytes = parse_byte_size(disk_reserve);
+      if (!o.disk_reserve_bytes)
+        throw CLI::ValidationError("--disk-reserve", "expected a size such as 5G, 500M, 123456 (bytes) or 0, found \"" +
+                                                         disk_reserve + "\"");
     }
     if (!res.empty()) {
       if (!parse_resolution(res, o.xres, o.yres))

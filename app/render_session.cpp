@@ -1,5 +1,6 @@
 #include "app/render_session.h"
 
+#include "app/disk_reserve.h"
 #include "app/frame_count.h"
 #include "app/memory_limit.h"
 #include "app/process_memory.h"
@@ -160,6 +161,31 @@ void configure_procedurals(const AppOptions& o, RibParser& parser) {
   parser.set_run_program_limits(limits);
 }
 
+// "" when `image` may be written to `file` and leave the disk reserve free; else the error.
+std::string disk_reserve_refusal(const AppOptions& o, const std::string& file, const Image& image) {
+  if (o.disk_reserve_bytes && *o.disk_reserve_bytes == 0) return {};
+  const fs::path folder = fs::path(file).parent_path();
+  const std::optional<DiskSpace> space = disk_space(folder.empty() ? "." : folder.string());
+  if (!space) return {};  // no such folder: the write fails on its own
+  const uint64_t reserve = o.disk_reserve_bytes ? *o.disk_reserve_bytes : default_disk_reserve(*space);
+  const std::string source = o.disk_reserve_bytes
+                                 ? "--disk-reserve"
+                                 : "the default, 1 % of the file system up to 1 GB; --disk-reserve changes it";
+  const std::string shortfall = disk_reserve_shortfall(*space, image_file_bound(image.pixels.size()), reserve, source);
+  return shortfall.empty() ? shortfall : file + ": " + shortfall;
+}
+
+// write_image, unless the write would leave less than the disk reserve free (then nothing is
+// written).
+WriteResult write_within_reserve(const AppOptions& o, const std::string& file, const Image& image,
+                                 const ImageMetadata& meta, const ColorConfig& colors, const std::string& mode) {
+  WriteResult refused;
+  refused.error = disk_reserve_refusal(o, file, image);
+  if (refused.error.empty()) return write_image(file, image, meta, colors, mode);
+  refused.ok = false;
+  return refused;
+}
+
 }  // namespace
 
 int run_render_session(const AppOptions& o) {
@@ -268,7 +294,7 @@ int run_render_session(const AppOptions& o) {
     const FrameErrors& frame_errors = diag.frame_errors();  // the requests this frame was rendered without
     meta.error_count = frame_errors.count;
     meta.first_error = frame_errors.first;
-    WriteResult wr = write_image(path, image, meta, colors, scene.output.display_mode);
+    WriteResult wr = write_within_reserve(o, path, image, meta, colors, scene.output.display_mode);
     for (const std::string& w : wr.warnings) std::fprintf(stderr, "darc: warning: %s: %s\n", path.c_str(), w.c_str());
     if (wr.nonfinite_replaced > 0)
       std::fprintf(stderr, "darc: warning: %lld non-finite values written as 0 in %s\n",
@@ -286,7 +312,7 @@ int run_render_session(const AppOptions& o) {
     }
     if (!o.preview.empty()) {
       std::string pv = substitute_frame_number(o.preview, scene.output.frame_number);
-      WriteResult pr = write_image(pv, image, meta, colors, "rgba");
+      WriteResult pr = write_within_reserve(o, pv, image, meta, colors, "rgba");
       if (!pr.ok) {
         std::fprintf(stderr, "darc: error: cannot write %s: %s\n", pv.c_str(), pr.error.c_str());
         io_error = true;
