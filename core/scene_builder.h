@@ -164,6 +164,12 @@ class SceneBuilder : public RiTarget {
   // Throws RibError at the request that takes the frame over the limit; false for the frame's
   // later geometry, which is no longer built.
   bool reserve_frame_memory(uint64_t curve_segments, uint64_t surfaces, uint64_t polygon_points);
+  // The image's share of the frame's memory (core/frame_memory.h), counted at WorldBegin with the
+  // geometry that follows; a frame whose image alone takes it over the limit fails at WorldEnd,
+  // before the image is allocated.
+  void count_image_memory(const OutputSettings& out);
+  void check_frame_memory_at_world_end(const SourceLoc& loc);
+  std::string frame_memory_error(const char* with) const;
   // The id of the cached-archive call being replayed (RiTarget::replayed_request), 0 for any other.
   uint64_t replayed_id() const;
   // Adds a geometry request to the frame's geometry key (Scene::geometry_key); a request that
@@ -263,7 +269,8 @@ class SceneBuilder : public RiTarget {
   int frames_ready_ = 0, frames_failed_ = 0;
 
   std::unique_ptr<Scene> scene_;  // the frame being built (inside the world block)
-  uint64_t frame_memory_estimate_ = 0;  // core/frame_memory.h, of the geometry built so far
+  uint64_t frame_memory_estimate_ = 0;  // core/frame_memory.h, of the image and the geometry built so far
+  uint64_t image_memory_ = 0;           // the image's part of it
   bool frame_over_memory_ = false;      // the frame went over memory_limit_bytes: not rendered
   // Archive reuse (parser/archive_cache.h): the id of the replayed call being made, the curves
   // built from each replayed Curves call with what they depend on besides the call itself
