@@ -89,6 +89,26 @@ TEST(ArchiveFileLimits, AGzipArchiveStopsInflatingAtTheTextLimit) {
   EXPECT_TRUE(fine->ok) << fine->first_error();
 }
 
+// Distinct files that read each other 70 deep (no cycle): the read that would make the 65th level
+// is an error, once, and the levels above it are read.
+TEST(ArchiveFileLimits, ArchivesNestDeeperThan64LevelsNever) {
+  ScratchFolder dir;
+  const auto name = [](int i) {
+    std::string n = "a";
+    n += std::to_string(i);
+    n += ".rib";
+    return n;
+  };
+  for (int i = 1; i < 70; ++i) dir.write(name(i), "Sides 1\nReadArchive \"" + name(i + 1) + "\"\n");
+  dir.write("a70.rib", "Sides 1\n");
+  auto r = parse_procedural("ReadArchive \"a1.rib\"\n", (dir / "scene.rib").string());
+  const auto errors = r->errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].message, "archive \"a64.rib\" is nested deeper than 64 levels");
+  EXPECT_EQ(errors[0].loc.file_name(), (dir / "a63.rib").string());
+  EXPECT_EQ(r->target.named("Sides").size(), 63u);
+}
+
 TEST(ArchiveFileLimits, AnInputFileLargerThanTheTextLimitIsAnError) {
   ScratchFolder dir;
   const std::string path = dir.write("scene.rib", "Sides 1\n" + std::string(5000, '\n'));
