@@ -82,6 +82,10 @@ nlohmann::json counters_json(const RayCounters& c) {
           {"secondary_rays", c.secondary_rays},
           {"curve_segment_tests", c.segment_tests},
           {"surface_tests", c.surface_tests},
+          {"surface_pieces", c.surface_pieces},
+          {"shadow_segment_tests", c.shadow_segment_tests},
+          {"shadow_surface_pieces", c.shadow_surface_pieces},
+          {"fragment_merges", c.fragment_merges},
           {"point_tests", c.point_tests},
           {"grid_cells_visited", c.cells_visited},  // grid cells or BVH nodes: the accelerator's steps
           {"rays_terminated_early", c.rays_terminated_early},

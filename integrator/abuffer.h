@@ -5,6 +5,7 @@
 
 #include "core/footprint/coverage_mask.h"
 #include "core/geometry/curves/curve_set.h"
+#include "core/geometry/surfaces/surface_set.h"
 #include "core/math/vec.h"
 
 #include <algorithm>
@@ -33,6 +34,40 @@ struct Fragment {
   // Curves: from the ray to the strand axis at the shading point. Decides which of a strand's
   // equally covering pieces is shaded: the nearest is where the strand's closest approach is.
   float distance = 0;
+  // Surfaces with analytic coverage: shaded where the sub-ray (sub_u, sub_v) meets them (the
+  // centroid of what they cover).
+  bool at_sub_ray = false;
+  float sub_u = 0, sub_v = 0;
+  // Pieces of one surface (a mesh's triangles or faces): its layer key (kNoLayer: none) and the
+  // depth range of what the piece covers. Pieces of one layer whose ranges meet are one
+  // fragment: their coverages are areas of a partition and add up, their masks unite.
+  uint32_t layer = kNoLayer;
+  float t_near = 0, t_far = 0;
+  // Layer pieces: the piece's geometric normal; and, once pieces facing apart (a fold, a
+  // crease, a silhouette's turn) are in one fragment, the index of its shading sites in the
+  // A-buffer (-1: shaded at its own primitive and sub-ray alone).
+  Vec3f normal{};
+  int sites = -1;
+  bool covers_centre = false;  // the piece holds the footprint's centre (and is shaded there)
+};
+
+// Where a layer fragment is shaded when it holds pieces facing apart: each site is shaded and
+// their light is mixed by the coverage each brought, so a pixel across a fold gets both sides'
+// shading, as the stochastic hider's samples do (one site for all would make the fold a
+// staircase of whole pixels of one side's shade).
+struct ShadingSite {
+  uint32_t primitive = 0;
+  float t = 0, sub_u = 0, sub_v = 0;
+  Vec3f normal{};
+  float piece_coverage = 0;  // of the site's largest piece: where the site is shaded
+  float weight = 0;          // the coverage of every piece the site stands for
+};
+inline constexpr int kMaxShadingSites = 4;
+// Pieces whose normals are closer than this (cosine, about 18 degrees) share a shading site.
+inline constexpr float kSiteNormalCos = 0.95f;
+struct ShadingSites {
+  std::array<ShadingSite, kMaxShadingSites> site;
+  int count = 0;
 };
 
 struct ShadedFragment {
@@ -53,6 +88,14 @@ inline constexpr size_t kMaxFragments = 64;
 // 5 over the rounding; 1e-5 (the stochastic hider's continuation offset) also caught strands
 // crossing each other in the hair ball, +0.006 % on its 2x2 RMSE.
 inline constexpr float kEqualDepthFraction = 1e-6f;
+// Pieces of one surface meet at shared edges, where their depths are equal but for rounding:
+// ranges this close (relative to the depth) meet.
+inline constexpr float kLayerDepthSlack = 1e-5f;
+// How far below 1 the summed areas of pieces that cover every mask point may fall: rounding, and
+// pieces of a fold whose masks share a point add a little less than their area.
+inline constexpr float kPartitionRounding = 1e-3f;  // 2.4e-4 measured on a subdivided cube
+// Below this a footprint point's transmittance is rounding, and the point is closed.
+inline constexpr float kClosedTransmittance = 1e-6f;
 
 class ABuffer {
  public:
@@ -62,8 +105,11 @@ class ABuffer {
     color_ = {};
     point_transmittance_.fill(Vec3f{1, 1, 1});
     transmittance_sum_ = Vec3f{1, 1, 1} * float(kPoints);
+    closed_points_ = 0;
     peak_ = 0;
     added_ = 0;
+    merges_ = 0;
+    sites_.clear();
   }
 
   // Adds a fragment. Each curve segment is a piece of its strand, cut at its own ends, so the
@@ -72,35 +118,38 @@ class ABuffer {
   // and shading point of its largest piece. A piece of a strand already composited is composited
   // on its own (its mask points are the ones the earlier pieces left). `shade` is used when the
   // list is full and two fragments must be merged.
+  // Adds a fragment and returns the pending fragment that now holds it (valid until the next
+  // add or composite), or nullptr when the list was full and it went into a merged one.
+  //
+  // Each curve segment is a piece of its strand, cut at its own ends, so the pieces of one
+  // strand in one footprint add up: a strand already pending gets the sum of the coverages and
+  // the union of the masks (one fragment per strand per ray), keeping the depth and shading
+  // point of its largest piece. A piece of a strand already composited is composited on its own
+  // (its mask points are the ones the earlier pieces left). Pieces of a surface's layer merge the
+  // same way when their depth ranges meet (shared edges make them touch), so a mesh covers a
+  // footprint as the surface it tessellates does, and its front and back stay apart. `shade` is
+  // used when the list is full and two fragments must be merged.
   template <class Shade>
-  void add(const Fragment& f, Shade&& shade) {
-    if (f.strand != kNoStrand) {
-      for (Fragment& p : pending_)
-        if (p.strand == f.strand && !p.preshaded) {
-          // The new piece adds the part of its coverage on points the strand did not cover yet:
-          // pieces side by side (a joint) add up, pieces over each other (a kink, a hairpin)
-          // count once. Without masks (all points), pieces just add.
-          float added = f.coverage;
-          int k = mask_count(f.mask);
-          if (k > 0 && !(f.mask == kFullMask && p.mask == kFullMask))
-            added *= float(mask_count(f.mask & ~p.mask)) / float(k);
-          float sum = std::min(1.0f, p.coverage + added);
-          CoverageMask mask = p.mask | f.mask;
-          // Among equal coverages (pieces wider than the footprint all cover it), the piece
-          // nearest the ray: keeping the first found makes the shading parameter piecewise
-          // constant along wide ribbons.
-          if (f.coverage > p.coverage || (f.coverage == p.coverage && f.distance < p.distance)) p = f;
-          nearest_pending_ = std::min(nearest_pending_, p.t);
-          p.coverage = sum;
-          p.mask = mask;
-          return;
-        }
+  const Fragment* add(const Fragment& f, Shade&& shade) {
+    if (f.strand != kNoStrand || f.layer != kNoLayer) {
+      for (size_t i = 0; i < pending_.size(); ++i) {
+        Fragment& p = pending_[i];
+        if (!same_piece_group(p, f)) continue;
+        absorb(p, f);
+        if (f.layer != kNoLayer) return &pending_[merge_layer_around(i)];
+        return &p;
+      }
     }
     pending_.push_back(f);
     nearest_pending_ = std::min(nearest_pending_, f.t);
     ++added_;
     peak_ = std::max(peak_, pending_.size());
-    if (pending_.size() > kMaxFragments) merge_farthest(shade);
+    if (pending_.size() > kMaxFragments) {
+      merge_farthest(shade);
+      ++merges_;
+      return nullptr;
+    }
+    return &pending_.back();
   }
 
   // Sorts the pending fragments and composites those with t <= t_final, front to back; returns
@@ -152,16 +201,162 @@ class ABuffer {
   Vec3f transmittance() const { return transmittance_sum_ * (1.0f / kPoints); }
   size_t peak_length() const { return peak_; }
   size_t fragments_added() const { return added_; }
+  size_t fragments_merged() const { return merges_; }  // because the list was full
 
  private:
   // Depth order, ties by strand: coplanar fragments composite in the same order on every run.
   static bool nearer(const Fragment& a, const Fragment& b) { return a.t < b.t || (a.t == b.t && a.strand < b.strand); }
   void sort_pending() { std::sort(pending_.begin(), pending_.end(), nearer); }
 
+  // Whether f is another piece of what p holds: the same strand, or the same surface layer
+  // with depth ranges that meet (within rounding).
+  static bool same_piece_group(const Fragment& p, const Fragment& f) {
+    if (p.preshaded) return false;
+    if (f.strand != kNoStrand) return p.strand == f.strand;
+    if (p.layer != f.layer) return false;
+    const float slack = kLayerDepthSlack * std::max({std::abs(p.t_far), std::abs(f.t_far), 1e-30f});
+    return f.t_near <= p.t_far + slack && p.t_near <= f.t_far + slack;
+  }
+
+  // Adds piece f to p: the part of f's coverage on points p does not cover yet (pieces side by
+  // side add up, pieces over each other count once; without masks, pieces just add).
+  void absorb(Fragment& p, const Fragment& f) {
+    float added = f.coverage;
+    int k = mask_count(f.mask);
+    if (k > 0 && !(f.mask == kFullMask && p.mask == kFullMask))
+      added *= float(mask_count(f.mask & ~p.mask)) / float(k);
+    float sum = std::min(1.0f, p.coverage + added);
+    CoverageMask mask = p.mask | f.mask;
+    const float t_near = std::min(p.t_near, f.t_near), t_far = std::max(p.t_far, f.t_far);
+    const int sites = f.layer != kNoLayer ? absorb_sites(p, f, added) : -1;
+    // Among equal coverages (pieces wider than the footprint all cover it), the piece nearest
+    // the ray: keeping the first found makes the shading parameter piecewise constant along
+    // wide ribbons. The larger piece is shaded.
+    // Pieces of a layer: the one holding the footprint's centre is shaded (there), else the largest.
+    const bool replace = f.layer != kNoLayer && f.covers_centre != p.covers_centre
+                             ? f.covers_centre
+                             : f.coverage > p.coverage || (f.coverage == p.coverage && f.distance < p.distance);
+    if (replace) p = f;
+    nearest_pending_ = std::min(nearest_pending_, p.t);
+    // The pieces of a layer that covers the whole footprint (every mask point) are a partition of
+    // it: their areas add up to 1 but for kPartitionRounding.
+    if (f.layer != kNoLayer && mask == kFullMask && sum > 1.0f - kPartitionRounding) sum = 1.0f;
+    p.coverage = sum;
+    p.mask = mask;
+    p.t_near = t_near;
+    p.t_far = t_far;
+    if (f.layer != kNoLayer) p.sites = sites;
+  }
+
+  static ShadingSite own_site(const Fragment& f, float weight) {
+    return {f.primitive, f.t, f.sub_u, f.sub_v, f.normal, f.coverage, weight};
+  }
+
+  // The shading sites of p after piece (or layer fragment) f, which adds `added` coverage,
+  // joins it: -1 while all its pieces face alike.
+  int absorb_sites(const Fragment& p, const Fragment& f, float added) {
+    if (p.sites < 0 && f.sites < 0 && dot(p.normal, f.normal) >= kSiteNormalCos) return -1;
+    int index = p.sites;
+    if (index < 0) {
+      index = int(sites_.size());
+      ShadingSites own;
+      own.site[0] = own_site(p, p.coverage);
+      own.count = 1;
+      sites_.push_back(own);
+    }
+    if (f.sites < 0) {
+      add_site(sites_[size_t(index)], own_site(f, added));
+    } else {
+      // A whole fragment joins: its sites bring their share of what it adds.
+      const ShadingSites other = sites_[size_t(f.sites)];
+      const float scale = f.coverage > 0 ? added / f.coverage : 0.0f;
+      for (int i = 0; i < other.count; ++i) {
+        ShadingSite site = other.site[size_t(i)];
+        site.weight *= scale;
+        add_site(sites_[size_t(index)], site);
+      }
+    }
+    return index;
+  }
+
+  // Adds `site` to the site facing most alike, or as a new one when none faces within
+  // kSiteNormalCos and there is room.
+  static void add_site(ShadingSites& sites, const ShadingSite& site) {
+    int best = 0;
+    float best_cos = -2;
+    for (int i = 0; i < sites.count; ++i) {
+      const float c = dot(sites.site[size_t(i)].normal, site.normal);
+      if (c > best_cos) best_cos = c, best = i;
+    }
+    if (best_cos < kSiteNormalCos && sites.count < kMaxShadingSites) {
+      sites.site[size_t(sites.count++)] = site;
+      return;
+    }
+    ShadingSite& into = sites.site[size_t(best)];
+    into.weight += site.weight;
+    if (site.piece_coverage > into.piece_coverage) {
+      const float weight = into.weight;
+      into = site;
+      into.weight = weight;
+    }
+  }
+
+  // Shades f: at its own primitive, or at each of its shading sites, mixed by their weights.
+  template <class Shade>
+  ShadedFragment shade_fragment(const Fragment& f, Shade& shade) const {
+    if (f.sites < 0) return shade(f);
+    const ShadingSites& sites = sites_[size_t(f.sites)];
+    float total = 0;
+    for (int i = 0; i < sites.count; ++i) total += sites.site[size_t(i)].weight;
+    if (!(total > 0)) return shade(f);
+    ShadedFragment mixed{};
+    // An opacity all sites share is kept exactly (a weighted mean of 1s rounds below 1: an opaque
+    // mesh would leak).
+    bool one_opacity = true;
+    Vec3f first_opacity;
+    bool first = true;
+    for (int i = 0; i < sites.count; ++i) {
+      const ShadingSite& site = sites.site[size_t(i)];
+      if (!(site.weight > 0)) continue;
+      Fragment g = f;
+      g.primitive = site.primitive;
+      g.t = site.t;
+      g.sub_u = site.sub_u;
+      g.sub_v = site.sub_v;
+      g.sites = -1;
+      const ShadedFragment s = shade(g);
+      const float w = site.weight / total;
+      mixed.Ci += s.Ci * w;
+      mixed.Oi += s.Oi * w;
+      if (first) first_opacity = s.Oi, first = false;
+      one_opacity = one_opacity && s.Oi == first_opacity;
+    }
+    if (one_opacity && !first) mixed.Oi = first_opacity;
+    return mixed;
+  }
+
+  // After pending_[i] grew, other pieces of its layer may now meet it (a piece that bridges
+  // two): they are absorbed too. Returns i's index after the removals.
+  size_t merge_layer_around(size_t i) {
+    for (bool merged = true; merged;) {
+      merged = false;
+      for (size_t j = 0; j < pending_.size(); ++j) {
+        if (j == i || !same_piece_group(pending_[i], pending_[j])) continue;
+        const Fragment other = pending_[j];
+        absorb(pending_[i], other);
+        pending_.erase(pending_.begin() + long(j));
+        if (j < i) --i;
+        merged = true;
+        break;
+      }
+    }
+    return i;
+  }
+
   template <class Shade>
   ShadedFragment weighted(const Fragment& f, Shade& shade) const {
     if (f.preshaded) return {f.color, f.opacity};
-    ShadedFragment s = shade(f);
+    ShadedFragment s = shade_fragment(f, shade);
     return {s.Ci * f.coverage, s.Oi * f.coverage};
   }
 
@@ -180,7 +375,7 @@ class ABuffer {
     if (f.preshaded) {
       l.s = {f.color, f.opacity};
     } else {
-      l.s = shade(f);
+      l.s = shade_fragment(f, shade);
       l.mask = f.mask;
       const float k = float(mask_count(l.mask)), c = std::clamp(f.coverage, 0.0f, 1.0f) * kPoints;
       l.in_mask = k > 0 ? std::min(1.0f, c / k) : 0.0f;
@@ -193,10 +388,23 @@ class ABuffer {
   // light that arrives to `sum` and the transmittance it takes to `lost`.
   void composite_point(int b, const Vec3f& Ci, const Vec3f& Oi, float o, Vec3f& sum, Vec3f& lost) {
     Vec3f& t = point_transmittance_[b];
+    if (t == Vec3f{}) return;  // nothing gets through this point any more
     sum += mul(t, Ci) * o;
     Vec3f absorbed = mul(t, Oi * o);
     t -= absorbed;
     lost += absorbed;
+    // A point left with rounding's worth of light (pieces that partition the footprint spread
+    // areas a few ulps off their mask counts) is closed, so that an opaque mesh gives alpha
+    // exactly 1; once every point is, the sum is exactly 0 too (settle_transmittance).
+    if (t.x < kClosedTransmittance && t.y < kClosedTransmittance && t.z < kClosedTransmittance) {
+      lost += t;
+      t = Vec3f{};
+      ++closed_points_;
+    }
+  }
+  void settle_transmittance(const Vec3f& lost) {
+    transmittance_sum_ -= lost;
+    if (closed_points_ == kPoints) transmittance_sum_ = Vec3f{};
   }
 
   // Composites per footprint point: the fragment's coverage c is spread over its mask's k points
@@ -213,7 +421,7 @@ class ABuffer {
       if (o != 0.0f) composite_point(b, l.s.Ci, l.s.Oi, o, sum, lost);
     }
     color_ += sum * (1.0f / kPoints);
-    transmittance_sum_ -= lost;
+    settle_transmittance(lost);
   }
 
   // Composites pending_[first, last), all at equal depth (kEqualDepthFraction). Per footprint
@@ -257,7 +465,7 @@ class ABuffer {
       composite_point(b, together, opacity, 1.0f, sum, lost);
     }
     color_ += sum * (1.0f / kPoints);
-    transmittance_sum_ -= lost;
+    settle_transmittance(lost);
   }
 
   template <class Shade>
@@ -292,6 +500,7 @@ class ABuffer {
   float nearest_pending_ = std::numeric_limits<float>::infinity();
   static constexpr int kPoints = kMaskSide * kMaskSide;
   Vec3f transmittance_sum_ = Vec3f{1, 1, 1} * float(kPoints);
+  int closed_points_ = 0;  // points whose transmittance is 0
   Vec3f color_;
   std::array<Vec3f, kPoints> point_transmittance_ = [] {
     std::array<Vec3f, kPoints> a;
@@ -300,6 +509,8 @@ class ABuffer {
   }();
   size_t peak_ = 0;
   size_t added_ = 0;
+  size_t merges_ = 0;
+  std::vector<ShadingSites> sites_;  // of the layer fragments with pieces facing apart
 };
 
 }  // namespace darc

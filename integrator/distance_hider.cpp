@@ -1,5 +1,7 @@
 #include "integrator/distance_hider.h"
 
+#include "core/footprint/footprint_frame.h"
+#include "core/footprint/polygon_coverage.h"
 #include "core/math/curve_basis.h"
 #include "core/scene/interaction.h"
 #include "core/geometry/points/point_set_coverage.h"
@@ -24,6 +26,24 @@ T bezier(const T* c, float u) {
 
 // The differentials of the camera ray through raster (x, y) for a sample spacing of `spacing`
 // pixels: the rays one spacing to the right and one down.
+// A fragment of `primitive` at depth t (strand, u and distance for curves and points).
+Fragment fragment(float t, float coverage, uint32_t primitive, CoverageMask mask, uint32_t strand = kNoStrand,
+                  float u = 0, float distance = 0) {
+  Fragment f;
+  f.t = t;
+  f.coverage = coverage;
+  f.primitive = primitive;
+  f.mask = mask;
+  f.strand = strand;
+  f.u = u;
+  f.distance = distance;
+  return f;
+}
+
+// How much longer than the incoming footprint is wide a shadow ray's receiving patch may be
+// (the stretch of a surface seen about 83 degrees from its normal; footprint-everything.md §2.5).
+constexpr float kShadowPatchElongation = 2;
+
 RayFootprint camera_footprint(const Camera& cam, double x, double y, double spacing, const Ray& ray,
                               float min_radius) {
   Ray rx = cam.generate_ray(x + spacing, y), ry = cam.generate_ray(x, y + spacing);
@@ -33,6 +53,14 @@ RayFootprint camera_footprint(const Camera& cam, double x, double y, double spac
   f.ddx = rx.d - ray.d;
   f.ddy = ry.d - ray.d;
   f.min_radius = min_radius;
+  // A perspective camera's rays share their origin (a pencil with its apex there); an
+  // orthographic camera's share their direction.
+  if (f.dox == Vec3f{} && f.doy == Vec3f{}) {
+    f.form = FootprintForm::Pencil;
+    f.apex_t = 0;
+  } else if (f.ddx == Vec3f{} && f.ddy == Vec3f{}) {
+    f.form = FootprintForm::Parallel;
+  }
   return f;
 }
 
@@ -51,6 +79,15 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
   abuffer.clear();
   float nearest = std::numeric_limits<float>::infinity();
   DistanceRay distance_ray = make_distance_ray(ray, footprint);
+  // Made when the first planar convex surface is met (camera and shadow rays: pencils and
+  // prisms; reflected and refracted rays have none and keep the sub-ray tests).
+  FootprintFrame frame;
+  enum class FrameState { NotMade, Made, None } frame_state = FrameState::NotMade;
+  auto analytic_frame = [&]() -> const FootprintFrame* {
+    if (frame_state == FrameState::NotMade)
+      frame_state = FootprintFrame::make(ray, footprint, frame) ? FrameState::Made : FrameState::None;
+    return frame_state == FrameState::Made ? &frame : nullptr;
+  };
   auto visit = [&](uint32_t p) {
       uint32_t local;
       const Scene::PrimKind kind = scene.prim_kind(p, local);
@@ -60,6 +97,7 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
           if (filter.shadow && scene.materials[cs.attribute_id[local]].transmission == Transmission::Transparent)
             return;
           ++counters.segment_tests;
+          counters.shadow_segment_tests += filter.shadow;
           CurveFragmentHit h;
           // Segments are cut at their strand's ends and at joints the strand runs straight
           // through: the A-buffer adds the pieces of a strand up (SegmentEnds::cut_joints).
@@ -72,7 +110,7 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
           if (cs.oriented(local) && m.hides_back_of(lerp(h.u, cs.end_normal(local, 0), cs.end_normal(local, 1)), ray.d))
             return;
           abuffer.add(
-              Fragment{h.t, h.coverage, cs.strand_id[local], p, h.u, false, {}, {}, h.mask, -1, h.distance}, shade);
+              fragment(h.t, h.coverage, p, h.mask, cs.strand_id[local], h.u, h.distance), shade);
           nearest = std::min(nearest, h.t);
           break;
         }
@@ -81,6 +119,39 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
           if (filter.shadow && m.transmission == Transmission::Transparent) return;
           const float tmin = p == filter.origin_primitive ? filter.origin_min_t : 0.0f;
           if (tmin == std::numeric_limits<float>::infinity()) return;
+          const Vec3f opacity = filter.shadow ? shadow_opacity(m, m.opacity) : m.opacity;
+          // Planar convex surfaces (triangles, mesh faces, convex polygons): what their edges cover
+          // of the footprint, analytically.
+          ConvexOutline outline;
+          if (tmin == 0.0f && scene.surfaces.convex_outline(local, outline)) {
+            if (const FootprintFrame* fr = analytic_frame()) {
+              ++counters.surface_pieces;
+              counters.shadow_surface_pieces += filter.shadow;
+              frame.t_max = ray.tmax;
+              PolygonFootprintHit h;
+              if (!polygon_coverage(*fr, outline.span(), h) || filter.skips_layer_piece(outline.layer, h.t_near)) return;
+              const Vec3f normal = scene.surfaces.geometric_normal(local, outline.corners[0]);
+              if (m.hides_back_of(normal, h.travel)) return;
+              Fragment f = fragment(h.t, h.coverage, p, h.mask);
+              if (!ctx.settings.coverage_masks) f.mask = kFullMask;
+              f.at_sub_ray = true;
+              f.sub_u = h.u;
+              f.sub_v = h.v;
+              f.layer = outline.layer;
+              f.t_near = h.t_near;
+              f.t_far = h.t_far;
+              f.normal = normal;
+              f.covers_centre = h.covers_centre;
+              const Fragment* held = abuffer.add(f, shade);
+              nearest = std::min(nearest, h.t);
+              // Nothing behind an opaque layer that covers the whole footprint can be seen.
+              if (held && held->coverage >= 1.0f - 1e-4f && held->mask == kFullMask && opacity == Vec3f{1, 1, 1}) {
+                ray.tmax = std::min(ray.tmax, held->t_far);
+                distance_ray.t_max = ray.tmax;
+              }
+              return;
+            }
+          }
           // A visible hit of this surface by `r` (Sides 1 surfaces seen from behind are not).
           auto hit_surface = [&](const Ray& r_in, SurfaceHit& h) {
             ++counters.surface_tests;
@@ -92,12 +163,12 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
           const BBox piece_box = scene.surfaces.is_piece(local) ? scene.surfaces.bounds(local) : BBox{};
           if (!surface_coverage(ray, footprint, hit_surface, sf, scene.surfaces.is_piece(local) ? &piece_box : nullptr))
             return;
-          Fragment f{sf.t, sf.coverage, kNoStrand, p, 0, false, {}, {}, sf.mask, sf.point};
+          Fragment f = fragment(sf.t, sf.coverage, p, sf.mask);
+          f.surface_point = sf.point;
           if (!ctx.settings.coverage_masks) f.mask = kFullMask;
           abuffer.add(f, shade);
           nearest = std::min(nearest, sf.t);
           // Nothing behind an opaque surface that covers the whole footprint can be seen.
-          const Vec3f opacity = filter.shadow ? shadow_opacity(m, m.opacity) : m.opacity;
           if (sf.coverage == 1.0f && opacity == Vec3f{1, 1, 1}) {
             ray.tmax = std::min(ray.tmax, sf.t);
             distance_ray.t_max = ray.tmax;
@@ -115,7 +186,7 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
                                         ctx.settings.coverage_masks) ||
               filter.skips_primitive(p, h.t))
             return;
-          abuffer.add(Fragment{h.t, h.coverage, kNoStrand, p, 0, false, {}, {}, h.mask, -1, h.distance}, shade);
+          abuffer.add(fragment(h.t, h.coverage, p, h.mask, kNoStrand, 0, h.distance), shade);
           nearest = std::min(nearest, h.t);
           break;
         }
@@ -143,6 +214,7 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
     abuffer.composite_until(std::numeric_limits<float>::infinity(), shade);
   }
   counters.fragments += abuffer.fragments_added();
+  counters.fragment_merges += abuffer.fragments_merged();
   counters.peak_fragments = std::max<uint64_t>(counters.peak_fragments, abuffer.peak_length());
   return nearest;
 }
@@ -152,6 +224,10 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
 Ray footprint_sub_ray(const Ray& ray, const RayFootprint& footprint, int point) {
   const float step = 1.0f / kMaskSide;
   float u = (float(point % kMaskSide) + 0.5f) * step - 0.5f, v = (float(point / kMaskSide) + 0.5f) * step - 0.5f;
+  return footprint_sub_ray_at(ray, footprint, u, v);
+}
+
+Ray footprint_sub_ray_at(const Ray& ray, const RayFootprint& footprint, float u, float v) {
   Ray r = ray;
   r.o = ray.o + footprint.dox * u + footprint.doy * v;
   r.d = ray.d + footprint.ddx * u + footprint.ddy * v;
@@ -206,12 +282,26 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
   FootprintSecondaryRays(const DistanceContext& ctx, RayCounters& counters, RayScratchStack& scratch)
       : ctx_(ctx), counters_(counters), scratch_(scratch) {}
 
-  Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance, const RayFootprint*,
+  Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance, const RayFootprint* incoming,
                              const PathState& path) override {
     const SecondaryRaySettings& s = ctx_.base.secondary;
     Ray ray{at.P, l, s.ray_offset, distance};
-    return trace_footprint_transmittance(ctx_, ray, shadow_footprint(at, l, ctx_.min_radius), counters_,
-                                         scratch_.at(size_t(path.depth) + 1), shadow_filter(at),
+    // The receiving patch at most kShadowPatchElongation times the incoming footprint's width
+    // at P.
+    const float max_extent =
+        incoming ? kShadowPatchElongation * std::max(length(incoming->dox + incoming->ddx * at.t),
+                                                     length(incoming->doy + incoming->ddy * at.t))
+                 : std::numeric_limits<float>::infinity();
+    const RayFootprint footprint = shadow_footprint(at, distance, ctx_.min_radius, max_extent);
+    HitFilter filter = shadow_filter(at);
+    uint32_t local;
+    if (!at.is_curve && ctx_.base.scene.prim_kind(at.primitive, local) == Scene::PrimKind::Surface) {
+      // The start point's own mesh, within a few footprint radii, is the start point itself.
+      filter.origin_layer = ctx_.base.scene.surfaces.layer(local);
+      filter.origin_layer_min_t = 4 * footprint.reach(0);
+    }
+    return trace_footprint_transmittance(ctx_, ray, footprint, counters_,
+                                         scratch_.at(size_t(path.depth) + 1), filter,
                                          stopping_transmittance(s, path.weight, kDistanceMinTransmittance));
   }
 
@@ -238,7 +328,9 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const
   FootprintSecondaryRays secondary(ctx, counters, scratch);
   auto shade = [&](const Fragment& f) -> ShadedFragment {
     // Surfaces are shaded where the sub-ray that found them hit; the footprint stays the ray's.
-    const Ray shading_ray = f.surface_point < 0 ? ray : footprint_sub_ray(ray, footprint, f.surface_point);
+    const Ray shading_ray = f.at_sub_ray        ? footprint_sub_ray_at(ray, footprint, f.sub_u, f.sub_v)
+                            : f.surface_point < 0 ? ray
+                                                  : footprint_sub_ray(ray, footprint, f.surface_point);
     const Interaction at = make_interaction(scene, f.primitive, shading_ray, f.t, f.u, &footprint);
     auto visible = [&] { return path.weight * level.abuffer.visibility_weight(f); };
     const LazyWeight weight(visible);

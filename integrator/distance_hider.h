@@ -51,6 +51,8 @@ DistanceContext make_distance_context(const HiderContext& base, const DistanceHi
 
 // The ray through footprint point `point` of the 8 x 8 mask grid (its differentials applied).
 Ray footprint_sub_ray(const Ray& ray, const RayFootprint& footprint, int point);
+// The sub-ray at footprint coordinates (u, v) in [-1/2, 1/2]^2.
+Ray footprint_sub_ray_at(const Ray& ray, const RayFootprint& footprint, float u, float v);
 
 // Surfaces are antialiased with the same footprint: a surface whose edge crosses the footprint
 // covers the mask points whose sub-rays hit it. The ray itself and the four corner points are

@@ -21,8 +21,17 @@ struct HitFilter {
   uint32_t origin_primitive = kNoPrimitive;
   float origin_min_t = 0;
   bool shadow = false;
+  // The mesh a footprint shadow ray starts on (kNoLayer: none): its pieces nearer than
+  // origin_layer_min_t are skipped. The footprint's sub-rays start on the tangent plane of the
+  // start point, which cuts into a concave mesh around it: without this, the pieces around the
+  // start point shadow it in speckles (self-shadow acne).
+  uint32_t origin_layer = kNoLayer;
+  float origin_layer_min_t = 0;
 
   bool skips_primitive(uint32_t primitive, float t) const { return primitive == origin_primitive && t < origin_min_t; }
+  bool skips_layer_piece(uint32_t layer, float t_near) const {
+    return layer == origin_layer && layer != kNoLayer && t_near < origin_layer_min_t;
+  }
 };
 
 // The filter of a shadow ray leaving `at`: it never hits the strand it starts on, nor the sphere

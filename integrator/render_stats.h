@@ -17,7 +17,11 @@ struct RayCounters {
   uint64_t primary_rays = 0;
   uint64_t secondary_rays = 0;
   uint64_t segment_tests = 0;   // ray-curve segment intersection tests
-  uint64_t surface_tests = 0;   // ray-sphere and ray-polygon tests
+  uint64_t surface_tests = 0;   // ray-surface intersection tests (exact rays, and sub-rays of a footprint)
+  uint64_t surface_pieces = 0;  // surfaces covered analytically by a footprint (no sub-ray tests)
+  uint64_t shadow_segment_tests = 0;  // the segment tests made by shadow rays (part of segment_tests)
+  uint64_t shadow_surface_pieces = 0;  // the surface pieces shadow rays covered (part of surface_pieces)
+  uint64_t fragment_merges = 0;  // A-buffer fragments merged because the list was full
   uint64_t point_tests = 0;     // ray-point (RI Points) tests
   uint64_t cells_visited = 0;   // grid cells visited
   uint64_t rays_terminated_early = 0;  // stopped because the remaining transmittance was negligible
@@ -42,6 +46,10 @@ struct RayCounters {
     secondary_rays += o.secondary_rays;
     segment_tests += o.segment_tests;
     surface_tests += o.surface_tests;
+    surface_pieces += o.surface_pieces;
+    shadow_segment_tests += o.shadow_segment_tests;
+    shadow_surface_pieces += o.shadow_surface_pieces;
+    fragment_merges += o.fragment_merges;
     point_tests += o.point_tests;
     cells_visited += o.cells_visited;
     rays_terminated_early += o.rays_terminated_early;

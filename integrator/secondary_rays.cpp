@@ -29,8 +29,11 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
   auto path = [&] { return PathState{depth, pruning ? weight.get() : 1.0f}; };
   Vec3f c = lobes.emission;
   LightContribution lc;
+  // Half the footprint's width at P: light edges are filtered over it (exact rays: none).
+  const float footprint_radius =
+      footprint ? 0.5f * std::sqrt(std::max(length_squared(at.dPdx), length_squared(at.dPdy))) : 0.0f;
   for (const Light* light : shading.lights(at.material)) {
-    if (!light->illuminate(sp.P, lc)) continue;
+    if (!light->illuminate(sp.P, lc, footprint_radius)) continue;
     if (lc.ambient) {
       c += mul(lobes.ambient, lc.Cl);
       continue;

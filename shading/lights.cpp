@@ -25,7 +25,7 @@ Vec3d param_point(const ParamList& p, const char* name, Vec3d fallback) {
 class AmbientLight : public Light {
  public:
   explicit AmbientLight(Vec3f c) : c_(c) {}
-  bool illuminate(const Vec3f&, LightContribution& out) const override {
+  bool illuminate(const Vec3f&, LightContribution& out, float) const override {
     out = {c_, {}, true, 0};
     return true;
   }
@@ -37,7 +37,7 @@ class AmbientLight : public Light {
 class DistantLight : public Light {
  public:
   DistantLight(Vec3f c, Vec3f dir) : c_(c), to_light_(-normalize(dir)) {}
-  bool illuminate(const Vec3f&, LightContribution& out) const override {
+  bool illuminate(const Vec3f&, LightContribution& out, float) const override {
     out = {c_, to_light_, false, std::numeric_limits<float>::infinity()};
     return length_squared(to_light_) > 0;
   }
@@ -49,7 +49,7 @@ class DistantLight : public Light {
 class PointLight : public Light {
  public:
   PointLight(Vec3f c, Vec3f from) : c_(c), from_(from) {}
-  bool illuminate(const Vec3f& P, LightContribution& out) const override {
+  bool illuminate(const Vec3f& P, LightContribution& out, float) const override {
     Vec3f d = from_ - P;
     float d2 = length_squared(d);
     if (!(d2 > 0)) return false;
@@ -67,16 +67,26 @@ class SpotLight : public Light {
   SpotLight(Vec3f c, Vec3f from, Vec3f axis, float cone, float delta, float beam)
       : c_(c), from_(from), axis_(normalize(axis)), cos_outside_(std::cos(cone)),
         cos_inside_(std::cos(cone - delta)), beam_(beam) {}
-  bool illuminate(const Vec3f& P, LightContribution& out) const override {
+  bool illuminate(const Vec3f& P, LightContribution& out, float footprint_radius) const override {
     Vec3f d = from_ - P;
     float d2 = length_squared(d);
     if (!(d2 > 0)) return false;
     float dist = std::sqrt(d2);
     Vec3f L = d / dist;
     float cosangle = dot(-L, axis_);
-    if (cosangle <= cos_outside_) return false;
+    // The cone's edge seen through the footprint: the footprint spans an angle of about
+    // 2 footprint_radius / dist around L, so cos(angle) varies by sin(angle) times that over it;
+    // an edge sharper than that becomes a ramp as wide (the box-filtered step).
+    float outside = cos_outside_, inside = cos_inside_;
+    const float spread = std::sqrt(std::max(0.0f, 1 - cosangle * cosangle)) * footprint_radius / dist;
+    if (spread > 0 && inside - outside < 2 * spread) {
+      const float mid = 0.5f * (outside + inside);
+      outside = mid - spread;
+      inside = mid + spread;
+    }
+    if (cosangle <= outside) return false;
     float atten = std::pow(std::max(cosangle, 0.0f), beam_) / d2;
-    atten *= smoothstep(cos_outside_, cos_inside_, cosangle);
+    atten *= smoothstep(outside, inside, cosangle);
     out = {c_ * atten, L, false, dist};
     return atten > 0;
   }

@@ -21,8 +21,12 @@ struct LightContribution {
 class Light {
  public:
   virtual ~Light() = default;
-  // Returns false when the light sends nothing to P.
-  virtual bool illuminate(const Vec3f& P, LightContribution& out) const = 0;
+  // Returns false when the light sends nothing to P. `footprint_radius`: half the width of
+  // the footprint a ray gave P (world units; 0 for an exact point): light edges sharper than
+  // it (a spot's cone edge) are box-filtered over it, so that one shading point per footprint
+  // gives what many exact samples inside it would.
+  virtual bool illuminate(const Vec3f& P, LightContribution& out, float footprint_radius) const = 0;
+  bool illuminate(const Vec3f& P, LightContribution& out) const { return illuminate(P, out, 0.0f); }
   // Whether occluders between P and the light are looked for (LightDesc::casts_shadows).
   bool casts_shadows() const { return casts_shadows_; }
   void set_casts_shadows(bool on) { casts_shadows_ = on; }

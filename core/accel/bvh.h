@@ -155,19 +155,24 @@ uint64_t Bvh::footprint_walk(Ray& ray, const RayFootprint& footprint, BvhScratch
   const float dd = dot(ray.d, ray.d);
   if (!(dd > 0.0f) || !std::isfinite(dd)) return 0;
   const Slab4Ray sr(ray);
-  const float reach0 = footprint.reach(0.0f), reach1 = footprint.reach(1.0f) - reach0;
+  const ReachBound reach = footprint.reach_bound();
+  // The reach over a child's interval of the ray (nothing before t = 0 is within it).
+  auto reach_over = [&](float t0, float t1) { return reach.max_over(std::max(0.0f, t0), std::max(0.0f, t1)); };
   std::vector<BvhQueueEntry>& queue = scratch.queue;
   queue.clear();
   // A child enters the queue when the ray's cone comes within its box. A point p of the box
   // within reach of the ray at t_p puts ray(t_p) inside the box grown by reach(t_p) (a cube
   // around the cone's disc), so t_p lies in the ray's interval [t0, t1] through the grown box:
   // t0 is the child's key. `grow` bounds reach(t_p) for every point of the node; a child takes
-  // the smaller of its parent's bound and the reach at its own t1, so a child's grown box lies
-  // inside its parent's and keys never decrease along the walk.
+  // the smaller of its parent's bound and the largest reach over its own [t0, t1] (found with
+  // the parent's grow, so it holds every point of the child within reach; the reach is convex,
+  // so its largest is at an end: the far end for a footprint that grows, the near end for one
+  // that shrinks toward a light), so a child's grown box lies inside its parent's and keys never
+  // decrease along the walk.
   {
     // The root's bound: no point of the tree lies farther along the ray than its largest depth.
     float far = std::min(bvh_detail::far_depth(ray, bounds_), ray.tmax);
-    queue.push_back({ray.tmin, reach0 + reach1 * std::max(0.0f, far), 0, 0});
+    queue.push_back({ray.tmin, reach_over(ray.tmin, far), 0, 0});
   }
   uint64_t visited = 0;
   while (!queue.empty()) {
@@ -184,7 +189,7 @@ uint64_t Bvh::footprint_walk(Ray& ray, const RayFootprint& footprint, BvhScratch
     unsigned mask = hit.mask & node.valid;
     for (int k = 0; k < 4; ++k) {
       if (!((mask >> k) & 1)) continue;
-      float grow = std::min(e.grow, reach0 + reach1 * std::max(0.0f, hit.t1[k]));
+      float grow = std::min(e.grow, reach_over(hit.t0[k], hit.t1[k]));
       bvh_detail::queue_insert(queue, {hit.t0[k], grow, node.child[k], node.count[k]});
     }
   }

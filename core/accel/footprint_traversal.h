@@ -51,14 +51,16 @@ uint64_t traverse_with_footprint(const UniformGrid& grid, const Ray& ray, const 
   Vec3d o(ray.o), d(ray.d);
   double dlen = length(d);
   if (!(dlen > 0) || !std::isfinite(dlen)) return 0;
-  // The farthest the footprint can reach inside the grid: its reach at the grid's far corner.
+  // The farthest the footprint can reach inside the grid: its largest reach from the ray's start
+  // to the grid's far corner (the reach is convex in t: the largest is at an end).
   BBox gb = grid.bounds();
   double far_t = 0;
   for (int c = 0; c < 8; ++c) {
     Vec3d corner{(c & 1) ? gb.hi.x : gb.lo.x, (c & 2) ? gb.hi.y : gb.lo.y, (c & 4) ? gb.hi.z : gb.lo.z};
     far_t = std::max(far_t, length(corner - o) / dlen);
   }
-  float max_reach = footprint.reach(float(std::min(far_t, double(ray.tmax))));
+  const ReachBound bound = footprint.reach_bound();
+  float max_reach = bound.max_over(std::max(0.0f, ray.tmin), float(std::min(far_t, double(ray.tmax))));
   float t0, t1;
   if (!gb.expanded(max_reach).intersect(ray, t0, t1)) return 0;
 
@@ -83,7 +85,7 @@ uint64_t traverse_with_footprint(const UniformGrid& grid, const Ray& ray, const 
       double plane = ok + csk * (step > 0 ? layer + 1 : layer);
       tb = std::clamp((plane - o[k]) / d[k], ta, double(t1));
     }
-    float reach = footprint.reach(float(tb));
+    float reach = bound.max_over(float(std::max(0.0, ta)), float(std::max(0.0, tb)));
     Vec3d pa = o + d * ta, pb = o + d * tb;
     Vec3d r{reach, reach, reach};
     CellRange cells = cells_overlapping(grid, min(pa, pb) - r, max(pa, pb) + r);

@@ -28,8 +28,7 @@ DistanceRay make_distance_ray(const Ray& ray, const RayFootprint& footprint) {
   r.ray_length = float(ray_length);
   r.t_min = ray.tmin;
   r.t_max = ray.tmax;
-  r.reach0 = footprint.reach(0.0f);
-  r.reach1 = footprint.reach(1.0f) - r.reach0;
+  r.reach = footprint.reach_bound();
   r.footprint = &footprint;
   return r;
 }

@@ -8,8 +8,8 @@
 
 namespace darc {
 
-// A ray prepared once for the many segments (or points) it is tested against: a float frame perpendicular
-// to its direction and its footprint's reach. Per segment, only the control points are moved
+// A ray prepared once for the many segments (or points) it is tested against: a float frame
+// perpendicular to its direction and its footprint's reach. Per segment, only the control points are moved
 // into the frame (then turned in the frame's plane to lie along their chord), which is what
 // makes a rejected segment cost a few dozen flops.
 struct DistanceRay {
@@ -18,7 +18,7 @@ struct DistanceRay {
   Vec3f frame_x, frame_y;  // with dir, a right-handed orthonormal frame (frame_y = dir x frame_x)
   float ray_length = 1;    // |ray.d|: t = depth / ray_length
   float t_min = 0, t_max = 0;
-  float reach0 = 0, reach1 = 0;  // footprint reach at ray parameter t: reach0 + reach1 * t
+  ReachBound reach;        // the footprint's reach at ray parameter t (RayFootprint::reach_bound)
   const RayFootprint* footprint = nullptr;
 };
 

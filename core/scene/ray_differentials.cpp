@@ -73,8 +73,27 @@ RayFootprint refracted_footprint(const Interaction& at, const Vec3f& d, const Ve
   return footprint(at.dPdx, at.dPdy, change(incoming.ddx, dndx), change(incoming.ddy, dndy), t, incoming.min_radius);
 }
 
-RayFootprint shadow_footprint(const Interaction& at, const Vec3f& l, float min_radius) {
-  return footprint(at.dPdx, at.dPdy, {}, {}, l, min_radius);
+RayFootprint shadow_footprint(const Interaction& at, float distance, float min_radius, float max_extent) {
+  RayFootprint f;
+  auto bounded = [&](const Vec3f& side) {
+    const float len = length(side);
+    return len > max_extent ? side * (max_extent / len) : side;
+  };
+  f.dox = bounded(at.dPdx);
+  f.doy = bounded(at.dPdy);
+  f.min_radius = min_radius;
+  if (std::isfinite(distance) && distance > 0) {
+    // Sub-ray (u, v) runs from P + u dPdx + v dPdy along l - (u dPdx + v dPdy) / distance (l the
+    // unit direction to the light): at
+    // t = distance it is at the light.
+    f.ddx = f.dox * (-1.0f / distance);
+    f.ddy = f.doy * (-1.0f / distance);
+    f.form = FootprintForm::Pencil;
+    f.apex_t = distance;
+  } else {
+    f.form = FootprintForm::Parallel;
+  }
+  return f;
 }
 
 }  // namespace darc

@@ -111,7 +111,16 @@ TEST(PatchSurface, NurbsSphereHasTheSpheresSilhouetteAndShading) {
     SCOPED_TRACE(name(hider));
     const Image a = render(exact, hider), b = render(nurbs, hider);
     ASSERT_GT(covered(a), 200) << "the sphere is in view";
-    const Difference alpha = compare(a, b, a.channel_index("A")), all = compare(a, b);
+    const Difference alpha = compare(a, b, a.channel_index("A"));
+    // Colour and alpha: a pixel that only a sliver of one of the two silhouettes reaches has a
+    // depth in one image and none (the far plane) in the other; analytic coverage of the NURBS
+    // triangles finds slivers the exact sphere's sub-rays miss.
+    Difference all;
+    for (const char* c : {"R", "G", "B", "A"}) {
+      const Difference d = compare(a, b, a.channel_index(c));
+      all.rmse = std::max(all.rmse, d.rmse);
+      all.max = std::max(all.max, d.max);
+    }
     // Silhouette: the triangles are within 6e-4 of the radius (about 0.01 pixel here), so a sample
     // in that band is rare, and one sample weighs about 1/9 of a pixel.
     EXPECT_LT(alpha.rmse, 5e-3);

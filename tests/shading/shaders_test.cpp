@@ -87,6 +87,33 @@ TEST(Shaders, SpotlightConeAndFalloff) {
   EXPECT_FALSE(f.lights[0]->illuminate({1, 0, 0}, lc)) << "45 degrees is outside the 30 degree cone";
 }
 
+TEST(Shaders, SpotlightConeEdgeIsFilteredOverTheFootprint) {
+  // A cone of 30 degrees with no soft edge (conedeltaangle 0), from 1 above the plane y = 0: its
+  // edge crosses the plane at x = tan 30. An exact point there is lit or not; a footprint 0.2
+  // wide around it gets the box-filtered step, about half, and a footprint well inside or
+  // outside gets the exact value.
+  Fixture f;
+  f.lights = make_lights({light("spotlight", params({{"from", {0, 1, 0}},
+                                                      {"to", {0, 0, 0}},
+                                                      {"coneangle", {float(M_PI / 6)}},
+                                                      {"conedeltaangle", {0}}}))},
+                         f.diag);
+  const float edge = std::tan(float(M_PI / 6));
+  auto lit = [&](float x, float radius) {
+    LightContribution lc;
+    if (!f.lights[0]->illuminate({x, 0, 0}, lc, radius)) return 0.0f;
+    return lc.Cl.x;
+  };
+  const float inside = lit(edge - 0.2f, 0.1f);
+  EXPECT_EQ(lit(edge + 1e-3f, 0), 0.0f);
+  EXPECT_GT(lit(edge - 1e-3f, 0), 0.5f);
+  const float filtered = lit(edge, 0.1f);
+  EXPECT_GT(filtered, 0.3f * inside);
+  EXPECT_LT(filtered, 0.7f * inside);
+  EXPECT_EQ(lit(edge - 0.2f, 0.1f), lit(edge - 0.2f, 0)) << "far from the edge the footprint changes nothing";
+  EXPECT_EQ(lit(edge + 0.2f, 0.1f), 0.0f);
+}
+
 TEST(Shaders, PlasticHighlightPeaksAtTheMirrorDirection) {
   Fixture f;
   f.lights = make_lights({light("distantlight", params({{"from", {0, 1, 0}}, {"to", {0, 0, 0}}}))}, f.diag);

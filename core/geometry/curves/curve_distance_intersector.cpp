@@ -50,7 +50,7 @@ struct DistanceState {
   CoverageModel model;
   bool oriented;
   Vec3f normal0, normal1, dir;
-  float reach0, reach1;  // footprint reach = reach0 + reach1 * t
+  ReachBound reach;  // the footprint's reach at ray parameter t
   // Best fragment so far, and the geometry its coverage mask needs.
   bool found = false;
   float coverage = 0, t = 0, u = 0, distance = 0;
@@ -81,7 +81,15 @@ struct DistanceState {
     if (piece_count < int(pieces.size())) pieces[piece_count++] = p;
   }
 
-  float reach_at_depth(float z) const { return reach0 + reach1 * std::max(0.0f, z / ray_length); }
+  // The largest reach over the depths [z0, z1] along the unit direction (none before the origin).
+  float reach_over_depths(float z0, float z1) const {
+    return reach.max_over(std::max(0.0f, z0 / ray_length), std::max(0.0f, z1 / ray_length));
+  }
+  // The smallest: at the depth of the interval nearest the apex (the V's minimum).
+  float least_reach_over_depths(float z0, float z1) const {
+    const float t0 = std::max(0.0f, z0 / ray_length), t1 = std::max(t0, z1 / ray_length);
+    return reach.at(std::clamp(reach.apex_t, t0, t1));
+  }
 
   FootprintAt footprint_at(float t_hit) const {
     FootprintAt f;
@@ -348,8 +356,9 @@ void distance_recursive(const Vec3f cp[4], const float width[4], float u0, float
     float hw = half_max_width(sub_width);
     if (!(hw > 0.0f)) continue;
     float z_hi = std::max(std::max(sub_cp[0].z, sub_cp[1].z), std::max(sub_cp[2].z, sub_cp[3].z));
+    float z_lo = std::min(std::min(sub_cp[0].z, sub_cp[1].z), std::min(sub_cp[2].z, sub_cp[3].z));
     // Cull with the half-width plus the largest footprint over the sub-curve's depth range.
-    float margin = hw + s.reach_at_depth(z_hi + hw);
+    float margin = hw + s.reach_over_depths(z_lo - hw, z_hi + hw);
     if (!bound_overlaps_ray(sub_cp, margin, s.t_min * s.ray_length, s.t_max * s.ray_length)) continue;
     distance_recursive(sub_cp, sub_width, half == 0 ? u0 : u_mid, half == 0 ? u_mid : u1, depth - 1, ends, s);
   }
@@ -360,7 +369,7 @@ void distance_recursive(const Vec3f cp[4], const float width[4], float u0, float
 // Where the end is out of the footprint's reach, the footprint is wholly on one side of the
 // end's line for a straight strand anyway, so skipping the fall-off there changes nothing.
 bool end_within_reach(const Vec3f& end, float half_width, const DistanceState& s) {
-  return hypot2(end.x, end.y) <= half_width + s.reach_at_depth(end.z + half_width);
+  return hypot2(end.x, end.y) <= half_width + s.reach_over_depths(end.z - half_width, end.z + half_width);
 }
 
 
@@ -397,7 +406,8 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   // Depth rejection first (cheapest): the hull's depth range against the ray's interval.
   float z_hi = std::max(std::max(z[0], z[1]), std::max(z[2], z[3]));
   float z_lo = std::min(std::min(z[0], z[1]), std::min(z[2], z[3]));
-  const float reach_far = ray.reach0 + ray.reach1 * std::max(0.0f, (z_hi + hw) / ray.ray_length);
+  const float reach_far =
+      ray.reach.max_over(std::max(0.0f, (z_lo - hw) / ray.ray_length), std::max(0.0f, (z_hi + hw) / ray.ray_length));
   const float margin = hw + reach_far;
   if (z_hi + margin < ray.t_min * ray.ray_length || z_lo - margin > ray.t_max * ray.ray_length) return false;
   // Turn the frame in its plane so that x runs along the projected chord: the hull is then thin
@@ -428,8 +438,7 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
     s.normal1 = set.end_normal(segment, 1);
   }
   s.dir = ray.dir;
-  s.reach0 = ray.reach0;
-  s.reach1 = ray.reach1;
+  s.reach = ray.reach;
 
   EndFalloff fall;
   float min_tangent = kEndOnTangentFraction * 2.0f * hw;
@@ -450,7 +459,7 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
 
   // Refine until leaves are flat relative to max(width, footprint): far, sub-pixel hair needs no
   // leaves flatter than the footprint it is averaged over (curve-ray-tracing.md §6 case 2).
-  float nearest_footprint = 2.0f * s.reach_at_depth(std::max(z_lo, 0.0f));
+  float nearest_footprint = 2.0f * s.least_reach_over_depths(z_lo, z_hi);
   int depth = refinement_depth(ray_cp, std::max(2.0f * hw, nearest_footprint));
   distance_recursive(ray_cp, width, 0.0f, 1.0f, depth, fall, s);
   if (!s.found) return false;

@@ -114,7 +114,7 @@ bool intersect_point_distance(const PointSet& set, size_t i, const DistanceRay& 
   const float x = dot(rel, ray.frame_x), y = dot(rel, ray.frame_y);
   const float d2 = x * x + y * y;
   // Cheapest rejection first: beyond the radius plus the footprint's reach nothing is covered.
-  const float reach = ray.reach0 + ray.reach1 * std::max(0.0f, t);
+  const float reach = ray.reach.at(std::max(0.0f, t));
   if (d2 > (r + reach) * (r + reach)) return false;
   const Vec3f ax = ray.footprint->axis_x(t), ay = ray.footprint->axis_y(t);
   const float ax_x = dot(ax, ray.frame_x), ax_y = dot(ax, ray.frame_y);

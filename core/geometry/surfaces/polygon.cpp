@@ -9,6 +9,25 @@ namespace darc {
 
 namespace {
 
+// True when the 2D loop turns the same way at every corner (collinear corners aside): then its
+// corners in order bound a convex region.
+bool is_convex_loop(const std::vector<Vec2f>& loop) {
+  const size_t n = loop.size();
+  if (n < 3) return false;
+  int sign = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2f& p0 = loop[i];
+    const Vec2f& p1 = loop[(i + 1) % n];
+    const Vec2f& p2 = loop[(i + 2) % n];
+    const double turn = double(p1.x - p0.x) * double(p2.y - p1.y) - double(p1.y - p0.y) * double(p2.x - p1.x);
+    const int s = (turn > 0) - (turn < 0);
+    if (s == 0) continue;
+    if (sign != 0 && s != sign) return false;
+    sign = s;
+  }
+  return sign != 0;
+}
+
 // A polygon whose area is below this fraction of its squared bounding-box diagonal is treated
 // as degenerate (collinear or coincident points): its plane normal would be mostly rounding noise.
 constexpr double kDegenerateAreaFraction = 1e-10;
@@ -83,6 +102,7 @@ std::optional<PolygonShape> PolygonShape::make(const std::vector<std::vector<Vec
     }
   }
   shape.loop_starts.push_back(uint32_t(shape.points_2d.size()));
+  if (shape.loop_starts.size() == 2 && is_convex_loop(shape.points_2d)) shape.convex_corners = loops_world[0];
   return shape;
 }
 

@@ -38,6 +38,11 @@ struct PolygonShape {
   int source_face = 0;
   // One of several faces of a mesh, which together make one surface (set by the scene builder).
   bool piece = false;
+  // Which mesh a piece belongs to (its PointsPolygons request; set by the scene builder).
+  uint32_t mesh = 0;
+  // The outer loop's world-space corners when the polygon is one convex loop (footprint
+  // coverage works on them, SurfaceSet::convex_outline); empty otherwise.
+  std::vector<Vec3f> convex_corners;
 
   // loops_world[0] is the outer boundary, the others are holes (all in world space). Holes
   // with fewer than 3 points are ignored. Returns nullopt for a degenerate polygon: fewer than

@@ -1,5 +1,7 @@
 #include "core/geometry/surfaces/surface_set.h"
 
+#include <algorithm>
+
 namespace darc {
 
 BBox SurfaceSet::bounds(uint32_t surface) const {
@@ -44,6 +46,41 @@ Vec3f SurfaceSet::geometric_normal(uint32_t surface, const Vec3f& p) const {
     case Kind::Quadric: return quadrics[i].normal_at(p);
   }
   return {};
+}
+
+bool SurfaceSet::convex_outline(uint32_t surface, ConvexOutline& out) const {
+  uint32_t i;
+  switch (locate(surface, i)) {
+    case Kind::Triangle:
+      for (int k = 0; k < 3; ++k) out.corners[size_t(k)] = triangles.corner(i, k);
+      out.count = 3;
+      out.layer = layer(surface);
+      return true;
+    case Kind::Polygon: {
+      const PolygonShape& shape = polygons[i];
+      const size_t n = shape.convex_corners.size();
+      if (n < 3 || n > out.corners.size()) return false;
+      std::copy(shape.convex_corners.begin(), shape.convex_corners.end(), out.corners.begin());
+      out.count = int(n);
+      // Polygon meshes' layers are kept apart from the triangle meshes' by the top bit.
+      out.layer = layer(surface);
+      return true;
+    }
+    case Kind::Sphere:
+    case Kind::Quadric: return false;
+  }
+  return false;
+}
+
+uint32_t SurfaceSet::layer(uint32_t surface) const {
+  uint32_t i;
+  switch (locate(surface, i)) {
+    case Kind::Triangle: return triangles.mesh(i);
+    case Kind::Polygon: return polygons[i].piece ? (0x80000000u | polygons[i].mesh) : kNoLayer;
+    case Kind::Sphere:
+    case Kind::Quadric: return kNoLayer;
+  }
+  return kNoLayer;
 }
 
 Vec3f SurfaceSet::shading_normal(uint32_t surface, const Vec3f& p) const {

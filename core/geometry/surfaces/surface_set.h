@@ -6,6 +6,7 @@
 // is built in).
 #pragma once
 
+#include "core/footprint/polygon_coverage.h"
 #include "core/math/bbox.h"
 #include "core/geometry/surfaces/polygon.h"
 #include "core/geometry/surfaces/quadric.h"
@@ -14,10 +15,25 @@
 #include "core/geometry/surfaces/surface_hit.h"
 #include "core/geometry/surfaces/triangle_store.h"
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace darc {
+
+// The layer of a surface that is not a piece of a larger one: never merged with another.
+inline constexpr uint32_t kNoLayer = 0xffffffffu;
+
+// A planar convex surface (a triangle, a polygon of one convex loop) as footprint coverage
+// sees it: its corners in order, and the layer it belongs to (the mesh: pieces of one layer that
+// meet in a footprint are one fragment there).
+struct ConvexOutline {
+  std::array<Vec3f, kMaxPolygonCorners> corners;
+  int count = 0;
+  uint32_t layer = kNoLayer;
+  std::span<const Vec3f> span() const { return {corners.data(), size_t(count)}; }
+};
 
 struct SurfaceSet {
   enum class Kind { Sphere, Polygon, Triangle, Quadric };
@@ -28,6 +44,7 @@ struct SurfaceSet {
   std::vector<Quadric> quadrics;  // Cone, Cylinder, Disk, Paraboloid, Hyperboloid, Torus
   // Per shape of each kind: an index into Scene::materials.
   std::vector<uint32_t> sphere_material, polygon_material, triangle_material, quadric_material;
+  uint32_t polygon_meshes = 0;  // PolygonShape::mesh numbers given so far
 
   size_t size() const { return spheres.size() + polygons.size() + triangles.size() + quadrics.size(); }
   bool empty() const { return size() == 0; }
@@ -63,6 +80,11 @@ struct SurfaceSet {
     const Kind kind = locate(surface, i);
     return kind == Kind::Triangle || (kind == Kind::Polygon && polygons[i].piece);
   }
+  // The outline of `surface` when it is planar and convex (every triangle; a polygon of one
+  // convex loop with at most kMaxPolygonCorners corners); false for everything else.
+  bool convex_outline(uint32_t surface, ConvexOutline& out) const;
+  // The layer (mesh) `surface` is a piece of; kNoLayer for a surface on its own.
+  uint32_t layer(uint32_t surface) const;
   // The normal shading uses at p: the geometric one, except on triangles with vertex normals.
   Vec3f shading_normal(uint32_t surface, const Vec3f& p) const;
 };

@@ -43,12 +43,14 @@ size_t TriangleStore::add(const TriangleMeshData& world) {
     corners_.insert(corners_.end(), {base + a, base + b, base + c});
     face_normal_.push_back(Vec3f(normal / len));
     smooth_.push_back(has_normals ? 1 : 0);
+    mesh_.push_back(meshes_);
     ++kept;
   }
   // Vertices without normals or uv in a store where other meshes have them: keep the arrays
   // parallel (the flags say which triangles use them).
   if (!N_.empty()) N_.resize(P_.size(), Vec3f{});
   if (!uv_.empty()) uv_.resize(P_.size(), Vec2f{});
+  ++meshes_;
   return kept;
 }
 
@@ -121,7 +123,8 @@ Vec3f TriangleStore::shading_normal(uint32_t triangle, const Vec3f& p) const {
 
 size_t TriangleStore::memory_bytes() const {
   return P_.capacity() * sizeof(Vec3f) + N_.capacity() * sizeof(Vec3f) + uv_.capacity() * sizeof(Vec2f) +
-         corners_.capacity() * sizeof(uint32_t) + face_normal_.capacity() * sizeof(Vec3f) + smooth_.capacity();
+         corners_.capacity() * sizeof(uint32_t) + face_normal_.capacity() * sizeof(Vec3f) + smooth_.capacity() +
+         mesh_.capacity() * sizeof(uint32_t);
 }
 
 }  // namespace darc

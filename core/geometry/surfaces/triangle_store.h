@@ -29,6 +29,12 @@ class TriangleStore {
   // (the barycentrics when the mesh has none).
   bool intersect(uint32_t triangle, const Ray& ray, SurfaceHit& hit) const;
 
+  // The triangle's corners a, b, c: the store's shared vertices, bitwise the same for every
+  // triangle that uses them (what makes footprint coverage watertight along shared edges).
+  const Vec3f& corner(uint32_t triangle, int k) const { return P_[corners_[3 * size_t(triangle) + size_t(k)]]; }
+  // Which add() the triangle came from: the triangles of one mesh (one surface) share it.
+  uint32_t mesh(uint32_t triangle) const { return mesh_[triangle]; }
+
   // The unit face normal, (b - a) x (c - a) normalized (orientation not applied).
   Vec3f face_normal(uint32_t triangle) const { return face_normal_[triangle]; }
 
@@ -48,6 +54,8 @@ class TriangleStore {
   std::vector<uint32_t> corners_;  // 3 vertex indices per triangle
   std::vector<Vec3f> face_normal_;
   std::vector<uint8_t> smooth_;  // per triangle: has vertex normals
+  std::vector<uint32_t> mesh_;   // per triangle: the add() it came from
+  uint32_t meshes_ = 0;
 };
 
 }  // namespace darc

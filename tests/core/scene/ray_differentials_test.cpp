@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <random>
+
 #include <cmath>
 
 namespace darc {
@@ -68,14 +71,60 @@ TEST(RayDifferentials, RefractionObeysSnellAndReportsTotalInternalReflection) {
   EXPECT_FALSE(refract(steep, n, 1.5f, t));
 }
 
-TEST(RayDifferentials, AShadowFootprintKeepsItsSizeAndIsPerpendicularToTheRay) {
+// Toward a point light the shadow footprint is a pencil: every sub-ray starts on the receiving
+// patch and reaches the light at t = distance, where the reach is 0.
+TEST(RayDifferentials, AShadowFootprintTowardALightIsAPencilFromThePatchToTheLight) {
+  Interaction at = flat_hit({0, 0, 0}, {0.1f, 0, 0}, {0, 0.1f, 0});
+  const Vec3f light{3, 1, 4};
+  const float distance = length(light - at.P);
+  const Vec3f l = (light - at.P) * (1.0f / distance);
+  RayFootprint f = shadow_footprint(at, distance, 0);
+  EXPECT_EQ(f.form, FootprintForm::Pencil);
+  for (float u : {-0.5f, 0.5f})
+    for (float v : {-0.5f, 0.5f}) {
+      const Vec3f origin = f.dox * u + f.doy * v;  // relative to P
+      EXPECT_NEAR(origin.z, 0.0f, 1e-7f) << "sub-rays start on the receiver's plane";
+      const Vec3f end = origin + (l + f.ddx * u + f.ddy * v) * distance;
+      EXPECT_NEAR(length(end - light), 0.0f, 1e-5f) << "and meet at the light";
+    }
+  const ReachBound reach = f.reach_bound();
+  EXPECT_NEAR(reach.at(distance), 0.0f, 1e-6f);
+  EXPECT_NEAR(reach.at(0), 0.5f * (0.1f + 0.1f), 1e-6f);
+  EXPECT_NEAR(reach.at(0.5f * distance), 0.5f * reach.at(0), 1e-6f) << "halfway to the light, half the size";
+  // Over an interval the largest reach is at its near end (the footprint shrinks).
+  EXPECT_FLOAT_EQ(reach.max_over(1, 2), reach.at(1));
+}
+
+// Toward a distant light it is a prism of the patch: the same size all the way.
+TEST(RayDifferentials, AShadowFootprintTowardADistantLightKeepsItsSize) {
   Interaction at = flat_hit({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
-  const Vec3f l = normalize(Vec3f{1, 0, 1});
-  RayFootprint f = shadow_footprint(at, l, 0);
-  EXPECT_NEAR(dot(f.dox, l), 0.0f, 1e-6f);
-  EXPECT_NEAR(dot(f.doy, l), 0.0f, 1e-6f);
+  RayFootprint f = shadow_footprint(at, std::numeric_limits<float>::infinity(), 0);
+  EXPECT_EQ(f.form, FootprintForm::Parallel);
+  EXPECT_EQ(f.ddx, Vec3f{});
   EXPECT_NEAR(f.reach(100), f.reach(0), 1e-6f);
-  EXPECT_NEAR(length(f.dox), std::sqrt(0.5f), 1e-6f) << "the footprint as the light sees it";
+  EXPECT_NEAR(length(f.dox), 1.0f, 1e-6f) << "the receiving patch itself, in its tangent plane";
+}
+
+// The reach bound is exact for a camera pencil (today's formula), and for any footprint never
+// below the true reach, which is convex in t.
+TEST(RayDifferentials, TheReachBoundHoldsTheTrueReachOfAnyFootprint) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> c(-1, 1);
+  auto vec = [&] { return Vec3f{c(rng), c(rng), c(rng)}; };
+  for (int i = 0; i < 2000; ++i) {
+    RayFootprint f;
+    f.dox = vec() * 0.1f;
+    f.doy = vec() * 0.1f;
+    f.ddx = vec() * 0.01f;
+    f.ddy = vec() * 0.01f;
+    const ReachBound bound = f.reach_bound();
+    for (float t : {0.0f, 0.5f, 3.0f, 10.0f, 40.0f}) {
+      const float exact = 0.5f * (length(f.axis_x(t)) + length(f.axis_y(t)));
+      EXPECT_GE(bound.at(t) * (1 + 1e-5f) + 1e-7f, exact) << i << " at " << t;
+    }
+  }
+  RayFootprint camera = pencil_footprint({}, {}, {0.01f, 0, 0}, {0, 0.02f, 0}, 0, 0);
+  EXPECT_FLOAT_EQ(camera.reach(10), 0.5f * (0.01f + 0.02f) * 10);
 }
 
 }  // namespace
