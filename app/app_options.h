@@ -32,10 +32,18 @@ struct AppOptions {
   // process (app/memory_limit.h); 0 (--memory-limit none): no limit.
   std::optional<uint64_t> memory_limit_bytes;
   bool archive_cache = true;  // --no-archive-cache: parse every ReadArchive again (for comparison)
-  // --procedural-path (repeatable): folders Procedural "RunProgram" may start programs from,
-  // besides those of Option "searchpath" "procedural".
+  // --procedural-path (repeatable) and DARC_PROCEDURAL_PATH (colon-separated): the folders the
+  // user allows Procedural "RunProgram" to start programs from; the RIB's Option "searchpath"
+  // "procedural" may only narrow them (parser/procedural_folders.h).
   std::vector<std::string> procedural_paths;
+  std::vector<std::string> procedural_env_paths;
+  // --trust-rib: the user trusts the RIB files: their procedural search path may widen the
+  // user's folders and their Display names may leave the working folder.
+  bool trust_rib = false;
   double procedural_timeout_seconds = 60;  // --procedural-timeout: per RunProgram request
+  // --disk-reserve: the free space an image write must leave on its file system (0: none).
+  // Unset: app/disk_reserve.h's default, 1 % of the file system up to 1 GiB.
+  std::optional<uint64_t> disk_reserve_bytes;
 };
 
 // Exit codes (DESIGN.md).

@@ -4,8 +4,10 @@
 #include <CLI/CLI.hpp>
 
 #include <charconv>
+#include <cstdlib>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace darc {
 
@@ -37,6 +39,19 @@ bool parse_resolution(std::string_view text, int& width, int& height) {
   width = w;
   height = h;
   return true;
+}
+
+// "a:b::c" -> {a, b, c}: a colon-separated list of folders, as PATH is written.
+std::vector<std::string> split_folder_list(std::string_view list) {
+  std::vector<std::string> folders;
+  size_t begin = 0;
+  while (begin <= list.size()) {
+    size_t end = list.find(':', begin);
+    if (end == std::string_view::npos) end = list.size();
+    if (end > begin) folders.emplace_back(list.substr(begin, end - begin));
+    begin = end + 1;
+  }
+  return folders;
 }
 
 }  // namespace
@@ -80,8 +95,9 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
   app.add_flag("--no-archive-cache", no_archive_cache,
                "read and parse every ReadArchive again instead of replaying the archive parsed the first time");
   app.add_option("--procedural-path", o.procedural_paths,
-                 "a folder Procedural \"RunProgram\" may start programs from (repeatable); the scene's "
-                 "Option \"searchpath\" \"procedural\" adds others")
+                 "a folder Procedural \"RunProgram\" may start programs from (repeatable; also "
+                 "$DARC_PROCEDURAL_PATH, colon-separated); the scene's Option \"searchpath\" \"procedural\" "
+                 "may only narrow them")
       ->check(CLI::ExistingDirectory)
       ->expected(1)
       ->allow_extra_args(false)
@@ -89,6 +105,14 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
   app.add_option("--procedural-timeout", o.procedural_timeout_seconds,
                  "seconds a RunProgram generator may take for one request before it is killed (default 60)")
       ->check(CLI::Range(0.001, kMaxProceduralTimeoutSeconds));
+  app.add_flag("--trust-rib", o.trust_rib,
+               "I trust these RIB files: their Option \"searchpath\" \"procedural\" may add folders outside "
+               "--procedural-path (each is reported), and their Display names may write outside the working "
+               "folder (docs/threat-model.md)");
+  std::string disk_reserve;
+  app.add_option("--disk-reserve", disk_reserve,
+                 "free space an image write must leave on its file system, e.g. 5G or 0 (default: 1 % of the "
+                 "file system, at most 1G); a write that would leave less is refused");
   std::string memory_limit;
   app.add_option("--memory-limit", memory_limit,
                  "memory darc may use, e.g. 8G or 500M, or none (default: what the machine, the cgroup and "
@@ -96,12 +120,19 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
   try {
     app.parse(argc, argv);
     o.archive_cache = !no_archive_cache;
+    if (const char* env = std::getenv("DARC_PROCEDURAL_PATH")) o.procedural_env_paths = split_folder_list(env);
     if (memory_limit == "none") o.memory_limit_bytes = 0;
     else if (!memory_limit.empty()) {
       o.memory_limit_bytes = parse_byte_size(memory_limit);
       if (!o.memory_limit_bytes || *o.memory_limit_bytes == 0)
         throw CLI::ValidationError("--memory-limit", "expected a size such as 8G, 500M or 123456 (bytes), or none, "
                                                      "found \"" + memory_limit + "\"");
+    }
+    if (!disk_reserve.empty()) {
+      o.disk_reserve_bytes = parse_byte_size(disk_reserve);
+      if (!o.disk_reserve_bytes)
+        throw CLI::ValidationError("--disk-reserve", "expected a size such as 5G, 500M, 123456 (bytes) or 0, found \"" +
+                                                         disk_reserve + "\"");
     }
     if (!res.empty()) {
       if (!parse_resolution(res, o.xres, o.yres))

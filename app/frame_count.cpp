@@ -1,9 +1,10 @@
 #include "app/frame_count.h"
 
+#include "parser/rib_file.h"
+
 #include <cctype>
 #include <charconv>
-#include <fstream>
-#include <sstream>
+#include <filesystem>
 
 namespace darc {
 namespace {
@@ -43,15 +44,21 @@ int count_frames_in_text(std::string_view text, const std::optional<FrameList>& 
   return frames;
 }
 
-std::optional<int> count_frames(const std::vector<std::string>& inputs, const std::optional<FrameList>& selected) {
+std::optional<int> count_frames(const std::vector<std::string>& inputs, const std::optional<FrameList>& selected,
+                                std::uint64_t max_bytes) {
   int total = 0;
   for (const std::string& in : inputs) {
     if (in == "-" || (in.size() >= 3 && in.compare(in.size() - 3, 3, ".gz") == 0)) return std::nullopt;
-    std::ifstream f(in, std::ios::binary);
-    if (!f) return std::nullopt;
-    std::ostringstream text;
-    text << f.rdbuf();
-    total += count_frames_in_text(text.str(), selected);
+    // Only regular files are read twice (a pipe read here would be empty for the parser; it is
+    // not even opened, which would let its writer go on), and within the parser's limit.
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(in, ec)) return std::nullopt;
+    RibReadLimits limits;
+    limits.regular_files_only = true;
+    limits.max_bytes = max_bytes;
+    std::string text, error;
+    if (!read_rib_text(in, text, error, limits)) return std::nullopt;
+    total += count_frames_in_text(text, selected);
   }
   return total;
 }

@@ -4,6 +4,7 @@
 // archive or a gzip file does not; a file without FrameBegin counts one frame per WorldBegin.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,7 +17,9 @@ namespace darc {
 // The frames of `text` that `selected` (all when absent) selects.
 int count_frames_in_text(std::string_view text, const std::optional<FrameList>& selected);
 
-// Over the input files ("-" and .gz files are not scanned: nullopt, the count is unknown).
-std::optional<int> count_frames(const std::vector<std::string>& inputs, const std::optional<FrameList>& selected);
+// Over the input files ("-", .gz files and anything but a regular file are not scanned, nor a
+// file of more than `max_bytes` (0: no limit): nullopt, the count is unknown).
+std::optional<int> count_frames(const std::vector<std::string>& inputs, const std::optional<FrameList>& selected,
+                                std::uint64_t max_bytes = 0);
 
 }  // namespace darc

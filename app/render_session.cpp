@@ -1,5 +1,6 @@
 #include "app/render_session.h"
 
+#include "app/disk_reserve.h"
 #include "app/frame_count.h"
 #include "app/memory_limit.h"
 #include "app/process_memory.h"
@@ -101,21 +102,37 @@ nlohmann::json memory_json(const Scene& scene) {
           {"peak_resident_bytes", peak_resident_bytes()}};
 }
 
+// The memory the whole run may use: --memory-limit, else what Linux allows; nullopt for none.
+std::optional<MemoryLimit> run_memory_limit(const AppOptions& o) {
+  if (o.memory_limit_bytes) {
+    if (*o.memory_limit_bytes == 0) return std::nullopt;  // --memory-limit none
+    return MemoryLimit{*o.memory_limit_bytes, "--memory-limit"};
+  }
+  std::optional<MemoryLimit> system = memory_limit(this_process_memory_inputs());
+  if (system) system->source += "; --memory-limit changes it";
+  return system;
+}
+
+// No RIB text (an input, an archive, a .gz once decompressed) may be larger than the memory the
+// run may use: it could not be held, and a file that never ends or a gzip bomb stops here.
+std::uint64_t text_limit_bytes(const AppOptions& o) {
+  const std::optional<MemoryLimit> limit = run_memory_limit(o);
+  return limit ? limit->bytes : 0;
+}
+
+void set_text_limit(const AppOptions& o, RibParser& parser) {
+  if (const std::optional<MemoryLimit> limit = run_memory_limit(o))
+    parser.set_text_limit(limit->bytes, "the memory limit, from " + limit->source);
+}
+
 // The part of the memory limit a frame's geometry may take (SceneBuilder checks its estimate):
 // what the process may hold, less what it holds now and twice the largest input file (the parser
 // holds a file's text while its frames are built; a gzip file's text is larger than the file,
 // which the factor of two roughly covers).
 void set_frame_memory_limit(const AppOptions& o, FrameOverrides& overrides) {
-  MemoryLimit limit;
-  if (o.memory_limit_bytes) {
-    if (*o.memory_limit_bytes == 0) return;  // --memory-limit none
-    limit = MemoryLimit{*o.memory_limit_bytes, "--memory-limit"};
-  } else if (std::optional<MemoryLimit> system = memory_limit(this_process_memory_inputs())) {
-    limit = *system;
-    limit.source += "; --memory-limit changes it";
-  } else {
-    return;
-  }
+  const std::optional<MemoryLimit> process_limit = run_memory_limit(o);
+  if (!process_limit) return;
+  const MemoryLimit& limit = *process_limit;
   const MemoryLimitInputs now = this_process_memory_inputs();
   uint64_t text = 0;
   for (const std::string& in : o.inputs) {
@@ -127,12 +144,46 @@ void set_frame_memory_limit(const AppOptions& o, FrameOverrides& overrides) {
   overrides.memory_limit_source = "the limit is " + format_bytes(limit.bytes) + ", from " + limit.source;
 }
 
-// --procedural-path and --procedural-timeout.
+// The user's procedural folders (--procedural-path, then DARC_PROCEDURAL_PATH), --trust-rib and
+// --procedural-timeout. A folder of the variable that does not exist is reported and left out
+// (--procedural-path checks its own as a usage error).
 void configure_procedurals(const AppOptions& o, RibParser& parser) {
-  parser.set_procedural_folders(o.procedural_paths);
+  std::vector<std::string> folders = o.procedural_paths;
+  for (const std::string& dir : o.procedural_env_paths) {
+    std::error_code ec;
+    if (fs::is_directory(dir, ec)) folders.push_back(dir);
+    else std::fprintf(stderr, "darc: warning: DARC_PROCEDURAL_PATH: \"%s\" is not a folder: ignored\n", dir.c_str());
+  }
+  parser.set_procedural_folders(folders);
+  parser.set_trust_rib(o.trust_rib);
   RunProgramLimits limits;
   limits.time_limit = std::chrono::milliseconds(std::llround(o.procedural_timeout_seconds * 1000));
   parser.set_run_program_limits(limits);
+}
+
+// "" when `image` may be written to `file` and leave the disk reserve free; else the error.
+std::string disk_reserve_refusal(const AppOptions& o, const std::string& file, const Image& image) {
+  if (o.disk_reserve_bytes && *o.disk_reserve_bytes == 0) return {};
+  const fs::path folder = fs::path(file).parent_path();
+  const std::optional<DiskSpace> space = disk_space(folder.empty() ? "." : folder.string());
+  if (!space) return {};  // no such folder: the write fails on its own
+  const uint64_t reserve = o.disk_reserve_bytes ? *o.disk_reserve_bytes : default_disk_reserve(*space);
+  const std::string source = o.disk_reserve_bytes
+                                 ? "--disk-reserve"
+                                 : "the default, 1 % of the file system up to 1 GB; --disk-reserve changes it";
+  const std::string shortfall = disk_reserve_shortfall(*space, image_file_bound(image.pixels.size()), reserve, source);
+  return shortfall.empty() ? shortfall : file + ": " + shortfall;
+}
+
+// write_image, unless the write would leave less than the disk reserve free (then nothing is
+// written).
+WriteResult write_within_reserve(const AppOptions& o, const std::string& file, const Image& image,
+                                 const ImageMetadata& meta, const ColorConfig& colors, const std::string& mode) {
+  WriteResult refused;
+  refused.error = disk_reserve_refusal(o, file, image);
+  if (refused.error.empty()) return write_image(file, image, meta, colors, mode);
+  refused.ok = false;
+  return refused;
 }
 
 }  // namespace
@@ -159,6 +210,7 @@ int run_render_session(const AppOptions& o) {
     RibWriter writer(std::cout);
     RibParser parser(writer, diag);
     configure_procedurals(o, parser);
+    set_text_limit(o, parser);
     for (const std::string& in : o.inputs) {
       if (diag.aborted()) break;
       parser.parse_file(in);
@@ -174,7 +226,7 @@ int run_render_session(const AppOptions& o) {
   }
   const ColorConfig& colors = *lookup.config;
   ProgressReporter progress(o.progress || !o.quiet, isatty(STDERR_FILENO) != 0);
-  if (o.progress || !o.quiet) progress.set_frames_in_run(count_frames(o.inputs, o.frames).value_or(0));
+  if (o.progress || !o.quiet) progress.set_frames_in_run(count_frames(o.inputs, o.frames, text_limit_bytes(o)).value_or(0));
   nlohmann::json stats_frames = nlohmann::json::array();
   // "--stats stats/f.####.json": each frame's entry goes to a file of its own as soon as the frame
   // is written, so a sequence stopped part-way (a farm task cancelled) keeps the stats it made.
@@ -242,7 +294,7 @@ int run_render_session(const AppOptions& o) {
     const FrameErrors& frame_errors = diag.frame_errors();  // the requests this frame was rendered without
     meta.error_count = frame_errors.count;
     meta.first_error = frame_errors.first;
-    WriteResult wr = write_image(path, image, meta, colors, scene.output.display_mode);
+    WriteResult wr = write_within_reserve(o, path, image, meta, colors, scene.output.display_mode);
     for (const std::string& w : wr.warnings) std::fprintf(stderr, "darc: warning: %s: %s\n", path.c_str(), w.c_str());
     if (wr.nonfinite_replaced > 0)
       std::fprintf(stderr, "darc: warning: %lld non-finite values written as 0 in %s\n",
@@ -260,7 +312,7 @@ int run_render_session(const AppOptions& o) {
     }
     if (!o.preview.empty()) {
       std::string pv = substitute_frame_number(o.preview, scene.output.frame_number);
-      WriteResult pr = write_image(pv, image, meta, colors, "rgba");
+      WriteResult pr = write_within_reserve(o, pv, image, meta, colors, "rgba");
       if (!pr.ok) {
         std::fprintf(stderr, "darc: error: cannot write %s: %s\n", pv.c_str(), pr.error.c_str());
         io_error = true;
@@ -298,10 +350,23 @@ int run_render_session(const AppOptions& o) {
   overrides.yres = o.yres;
   overrides.pixel_samples = o.pixel_samples;
   set_frame_memory_limit(o, overrides);
+  // -o is the user's; without it, the RIB's Display names stay in the working folder unless the
+  // user trusts the RIB.
+  if (o.output.empty() && !o.trust_rib) {
+    std::error_code ec;
+    const fs::path here = fs::canonical(fs::current_path(ec), ec);
+    if (ec) {
+      std::fprintf(stderr, "darc: error: cannot resolve the working folder (%s), where Display names must stay\n",
+                   ec.message().c_str());
+      return kExitRenderError;
+    }
+    overrides.display_folder = here.string();
+  }
   SceneBuilder builder(diag, cb, overrides);
   RibParser parser(builder, diag);
   if (o.archive_cache) parser.use_archive_cache(&archives);
   configure_procedurals(o, parser);
+  set_text_limit(o, parser);
   for (const std::string& in : o.inputs) {
     if (diag.aborted()) break;
     parser.parse_file(in);

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "parser/message_excerpt.h"
+
 #include <cstdio>
 
 namespace darc {
@@ -26,25 +28,26 @@ void Diagnostics::fix_handler(ErrorHandler handler) {
   handler_fixed_ = true;
 }
 
-void Diagnostics::emit(Diagnostic d, MessageBudget& budget) {
+void Diagnostics::emit(Diagnostic d, const std::string& kind, MessageBudget& budget) {
   // Ignored messages are not shown, so they take nothing from the caps.
   if (handler_ == ErrorHandler::Ignore) return;
-  if (!budget.admit(message_kind(d.request, d.message))) return;
+  if (!budget.admit(kind)) return;
   if (sink_) sink_(d);
   all_.push_back(std::move(d));
 }
 
 void Diagnostics::error(const SourceLoc& loc, const std::string& request, const std::string& message) {
   ++errors_;
-  Diagnostic d{Severity::Error, loc, request, message};
+  Diagnostic d{Severity::Error, loc, excerpt(request), bounded_message(message)};
   if (frame_errors_.count++ == 0) frame_errors_.first = d.str();
-  emit(std::move(d), error_budget_);
+  emit(std::move(d), message_kind(request, message), error_budget_);
   if (handler_ == ErrorHandler::Abort) aborted_ = true;
 }
 
 void Diagnostics::warning(const SourceLoc& loc, const std::string& request, const std::string& message) {
   ++warnings_;
-  emit({Severity::Warning, loc, request, message}, warning_budget_);
+  emit({Severity::Warning, loc, excerpt(request), bounded_message(message)}, message_kind(request, message),
+       warning_budget_);
 }
 
 void Diagnostics::warning_once(const std::string& key, const SourceLoc& loc, const std::string& request,

@@ -2,7 +2,8 @@
 // "file:line:col: error: Request: message" and handed to a sink (by default: printed to stderr)
 // as they arrive, as the RI ErrorHandler in effect says (error_handler.h). Counting is exact;
 // showing is capped per kind and in total (message_budget.h), and only the shown diagnostics are
-// kept, so a file with millions of errors costs counters, not millions of messages.
+// kept, so a file with millions of errors costs counters, not millions of messages. What a
+// message quotes of the RIB is bounded (message_excerpt.h).
 #pragma once
 
 #include "parser/error_handler.h"
@@ -79,7 +80,8 @@ class Diagnostics {
   std::vector<std::string> suppression_summary() const;
 
  private:
-  void emit(Diagnostic d, MessageBudget& budget);
+  // `kind` is taken from the message before it is bounded: values cut alike stay apart.
+  void emit(Diagnostic d, const std::string& kind, MessageBudget& budget);
   Sink sink_;
   ErrorHandler handler_ = ErrorHandler::Print;
   bool handler_fixed_ = false;

@@ -3,20 +3,12 @@
 #include "parser/simple_decimal.h"
 
 #include <fmt/format.h>
-#include <zlib.h>
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <iterator>
 #include <limits>
-#include <sstream>
 
 namespace darc {
 
@@ -24,8 +16,6 @@ namespace {
 
 // The largest magnitude a RIB number may have: every value ends up in a float somewhere.
 constexpr double kMaxNumberMagnitude = std::numeric_limits<float>::max();
-// zlib reads in chunks of this many bytes (a compromise between calls and memory).
-constexpr unsigned kGzipChunkBytes = 1u << 16;
 // Longest piece of a malformed token quoted in an error message.
 constexpr size_t kMaxQuotedChars = 40;
 
@@ -81,6 +71,24 @@ std::string describe(const Token& token) {
       return fmt::format("invalid token ({})", token.text);
   }
   return "token";
+}
+
+std::optional<std::string_view> leading_word(std::string_view text) {
+  size_t pos = 0;
+  while (pos < text.size()) {
+    const unsigned char c = text[pos];
+    if (is_space(c)) {
+      ++pos;
+    } else if (c == '#') {
+      while (pos < text.size() && text[pos] != '\n' && text[pos] != '\r') ++pos;
+    } else {
+      break;
+    }
+  }
+  if (pos == text.size()) return std::nullopt;
+  const unsigned char c = text[pos];
+  if (!kTokenByte[c] || starts_number(c)) return std::string_view();
+  return text.substr(pos, token_end(text, pos) - pos);
 }
 
 Lexer::Lexer(std::string text, std::shared_ptr<const std::string> file)
@@ -301,65 +309,6 @@ Token Lexer::scan_word(Token token) {
   token.kind = TokenKind::Word;
   token.text.assign(text_, begin, pos_ - begin);
   return token;
-}
-
-bool read_rib_text(const std::string& path, std::string& text, std::string& error) {
-  text.clear();
-  if (path == "-") {
-    text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-    return true;
-  }
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    error = "is a directory";
-    return false;
-  }
-  const bool gzipped = path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
-  if (gzipped) {
-    gzFile file = gzopen(path.c_str(), "rb");
-    if (!file) {
-      error = std::strerror(errno);
-      return false;
-    }
-    std::string chunk(kGzipChunkBytes, '\0');
-    int n = 0;
-    while ((n = gzread(file, chunk.data(), kGzipChunkBytes)) > 0) text.append(chunk.data(), static_cast<size_t>(n));
-    int code = Z_OK;
-    const char* message = gzerror(file, &code);
-    const bool ok = n == 0 && (code == Z_OK || code == Z_STREAM_END);
-    if (!ok) error = std::string("gzip: ") + (message ? message : "read error");
-    gzclose(file);
-    return ok;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = std::strerror(errno);
-    return false;
-  }
-  // Read into a buffer of the file's size: the text is the largest thing a big scene's parse
-  // holds besides its geometry, and a growing buffer would hold up to twice it for a moment.
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (!ec) {
-    text.resize(static_cast<size_t>(size));
-    in.read(text.data(), static_cast<std::streamsize>(size));
-    const bool whole = in.gcount() == static_cast<std::streamsize>(size);
-    text.resize(static_cast<size_t>(in.gcount()));
-    // A file that grew while it was read: the rest too.
-    if (whole && !in.bad()) text.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (in.bad()) {
-      error = "read error";
-      return false;
-    }
-    return true;
-  }
-  std::ostringstream contents;
-  contents << in.rdbuf();
-  if (in.bad()) {
-    error = "read error";
-    return false;
-  }
-  text = std::move(contents).str();
-  return true;
 }
 
 }  // namespace darc

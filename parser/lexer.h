@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,6 +37,11 @@ struct RibTextSpan {
 
 // "number 3.5", "string \"abc\"", "'['", "end of file", "request name Foo": for error messages.
 std::string describe(const Token& token);
+
+// The first token of `text` when it is a word (where a request name stands), without tokenizing
+// the rest: "" when the first token is something else (a number, a string, a bracket, a binary
+// or control byte); nullopt when the text holds nothing but white space and comments.
+std::optional<std::string_view> leading_word(std::string_view text);
 
 class Lexer {
  public:
@@ -80,9 +86,5 @@ class Lexer {
   bool has_peeked_ = false;
   Token peeked_;
 };
-
-// Reads a whole RIB file into `text`: `-` is standard input, names ending in ".gz" are
-// decompressed with zlib. Returns false and sets `error` when the file cannot be read.
-bool read_rib_text(const std::string& path, std::string& text, std::string& error);
 
 }  // namespace darc

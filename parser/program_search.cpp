@@ -6,30 +6,13 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "parser/path_containment.h"
+
 namespace darc {
 
 namespace {
 
 namespace fs = std::filesystem;
-
-// `file` lies below `folder` (both canonical): every component of the folder starts the file.
-bool is_inside(const fs::path& file, const fs::path& folder) {
-  auto f = file.begin();
-  for (auto d = folder.begin(); d != folder.end(); ++d, ++f) {
-    if (f == file.end() || *f != *d) return false;
-  }
-  return f != file.end();
-}
-
-std::vector<fs::path> canonical_folders(const std::vector<std::string>& folders) {
-  std::vector<fs::path> out;
-  for (const std::string& dir : folders) {
-    std::error_code ec;
-    fs::path p = fs::canonical(dir, ec);
-    if (!ec && fs::is_directory(p, ec)) out.push_back(std::move(p));
-  }
-  return out;
-}
 
 std::string folder_list(const std::vector<std::string>& folders) {
   std::string list;
@@ -47,11 +30,10 @@ ProgramSearch find_program(const std::string& name, const std::vector<std::strin
   }
   const std::vector<fs::path> trusted = canonical_folders(folders);
   if (trusted.empty()) {
-    result.error = fmt::format(
-        "program \"{}\" refused: programs run only from the folders of Option \"searchpath\" \"procedural\" and "
-        "--procedural-path, {}",
-        name,
-        folders.empty() ? "and none is given" : fmt::format("and none of them exists ({})", folder_list(folders)));
+    result.error = folders.empty()
+                       ? fmt::format("program \"{}\" refused: no folder may hold procedural programs", name)
+                       : fmt::format("program \"{}\" refused: none of the procedural folders exists ({})", name,
+                                     folder_list(folders));
     return result;
   }
   std::vector<fs::path> candidates;
@@ -66,7 +48,7 @@ ProgramSearch find_program(const std::string& name, const std::vector<std::strin
     const fs::path real = fs::canonical(candidate, ec);
     if (ec) continue;  // not there
     const bool inside =
-        std::any_of(trusted.begin(), trusted.end(), [&](const fs::path& dir) { return is_inside(real, dir); });
+        std::any_of(trusted.begin(), trusted.end(), [&](const fs::path& dir) { return is_within(real, dir); });
     std::string problem;
     if (!inside) {
       problem = fmt::format("program \"{}\" resolves to {}, outside the procedural search path ({}): refused", name,

@@ -1,8 +1,9 @@
 // Which program a RunProgram request may start. A scene file must never start arbitrary commands
-// on its own: a program is run only when it lies in one of the trusted folders (the folders of
-// Option "searchpath" "procedural" and of --procedural-path). The rule is checked on canonical
-// paths, so ".." and symbolic links cannot lead out of the folders: the program file itself,
-// after every link is resolved, must be inside one of them.
+// on its own: a program is run only when it lies in one of the trusted folders (the procedural
+// search path, which procedural_folders.h keeps inside the folders the user allowed unless the
+// user trusts the RIB). The rule is checked on canonical paths, so ".." and symbolic links cannot
+// lead out of the folders: the program file itself, after every link is resolved, must be inside
+// one of them.
 #pragma once
 
 #include <string>

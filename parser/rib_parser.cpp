@@ -89,9 +89,9 @@ bool RibParser::parse_file(const std::string& path) {
   const int errors_before = diag_.error_count();
   std::string text;
   std::string reason;
-  if (!read_rib_text(path, text, reason)) {
+  if (!read_rib_text(path, text, reason, text_limits_)) {
     diag_.error(SourceLoc{std::make_shared<const std::string>(path), 0, 0}, "",
-                fmt::format("cannot open \"{}\": {}", path, reason));
+                fmt::format("cannot read \"{}\": {}", path, reason));
     return false;
   }
   parse_text(std::move(text), path == "-" ? std::string("<stdin>") : path);
@@ -295,10 +295,10 @@ void RibParser::option(RequestReader& args, const SourceLoc& loc) {
       // Relative folders are taken from the file that names them, so that a scene and its
       // generators move together.
       const fs::path base = include_stack_.empty() ? fs::path() : fs::path(include_stack_.back()).parent_path();
-      std::vector<std::string> dirs = search_path(*procedural, procedural_path_, procedural_folders_);
+      std::vector<std::string> dirs = search_path(*procedural, procedural_search_path(), procedural_folders_);
       for (std::string& dir : dirs)
         if (fs::path(dir).is_relative()) dir = (base / dir).string();
-      procedural_path_ = std::move(dirs);
+      set_procedural_search_path(dirs, loc);
     }
   }
   target_.option(category, params, loc);
@@ -365,7 +365,9 @@ void RibParser::include_archive(const std::string& name, const SourceLoc& loc) {
   if (!archive_files_allowed_)
     throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\": file access is disabled", name));
   const std::string path = resolve_archive(name);
-  if (!is_readable_file(path)) throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\"", name));
+  std::error_code ec;
+  if (!fs::exists(path, ec))
+    throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\": no such file", name));
   const std::string canonical = canonical_name(path);
   if (std::find(include_stack_.begin(), include_stack_.end(), canonical) != include_stack_.end()) {
     throw RibSyntaxError(loc, fmt::format("archive \"{}\" includes itself (cycle through {})", name, canonical));
@@ -373,22 +375,37 @@ void RibParser::include_archive(const std::string& name, const SourceLoc& loc) {
   if (include_stack_.size() >= kMaxArchiveDepth) {
     throw RibSyntaxError(loc, fmt::format("archive \"{}\" is nested deeper than {} levels", name, kMaxArchiveDepth));
   }
-  if (archive_cache_) return include_cached_archive(path, canonical);
-  std::string text;
-  std::string reason;
-  if (!read_rib_text(path, text, reason)) throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\"", name));
-  parse_text(std::move(text), path);
+  // An archive that cannot be read is an error at the request that named it (the RibError of
+  // read_archive_text is reported where that request stands).
+  if (archive_cache_) return include_cached_archive(name, path, canonical);
+  parse_text(read_archive_text(name, path), path);
 }
 
-void RibParser::include_cached_archive(const std::string& path, const std::string& canonical) {
+std::string RibParser::read_archive_text(const std::string& name, const std::string& path) const {
+  RibReadLimits limits = text_limits_;
+  limits.regular_files_only = true;
+  std::string text;
+  std::string reason;
+  if (!read_rib_text(path, text, reason, limits))
+    throw RibError(fmt::format("cannot open archive \"{}\": {}", name, reason));
+  // A file that is not RIB (a password file, a key, a shell profile) would come out a token at
+  // a time in "unknown request" messages: it is refused whole, and nothing of it is quoted.
+  const std::optional<std::string_view> first = leading_word(text);
+  if (first && !find_known_request(*first) && !find_request_handler(*first))
+    throw RibError(fmt::format("cannot read archive \"{}\": it does not begin with a RIB request, so it is not RIB "
+                               "text (or is binary RIB, which is not supported); nothing of it is read",
+                               name));
+  return text;
+}
+
+void RibParser::include_cached_archive(const std::string& name, const std::string& path,
+                                       const std::string& canonical) {
   std::shared_ptr<const RecordedArchive> archive = archive_cache_->find(canonical, declared_, archive_path_);
   if (archive) {
     archive_cache_->count_replay();
   } else {
-    std::string text;
-    std::string reason;
     const std::optional<FileStamp> stamp = stamp_file(path);
-    if (!read_rib_text(path, text, reason)) throw RibError(fmt::format("cannot open archive \"{}\"", path));
+    std::string text = read_archive_text(name, path);
     std::optional<RecordedArchive> recorded = record_archive(text, path);
     if (!recorded) {
       // Not replayable: parse it as without a cache (the file was read once more for nothing).
@@ -426,19 +443,24 @@ std::optional<RecordedArchive> RibParser::record_archive(std::string text, const
   child.include_stack_ = include_stack_;
   child.archive_files_allowed_ = archive_files_allowed_;
   child.archive_cache_ = archive_cache_;
+  child.text_limits_ = text_limits_;
   child.recorded_files_ = &archive.files;
   child.inline_archives_ = inline_archives_;
   child.inline_stack_ = inline_stack_;
   child.conditions_ = conditions_;
   child.procedural_path_ = procedural_path_;
+  child.procedural_path_set_ = procedural_path_set_;
   child.procedural_folders_ = procedural_folders_;
+  child.trust_rib_ = trust_rib_;
   child.run_program_limits_ = run_program_limits_;
   child.parse_text(std::move(text), path);
   // Past the message caps some errors were counted but not recorded: a replay would lose them.
   if (!replayable || errors_kept != recorded_diag.error_count()) return std::nullopt;
   // Conditional RIB and inline archives depend on (or change) this parser's state of the
   // moment ($Frame, the archives defined so far): such an archive is parsed at each read.
-  if (child.read_parser_state_ || child.procedural_path_ != procedural_path_) return std::nullopt;
+  if (child.read_parser_state_ || child.procedural_path_set_ != procedural_path_set_ ||
+      child.procedural_path_ != procedural_path_)
+    return std::nullopt;
   archive.declarations_after = std::move(child.declared_);
   archive.search_path_after = std::move(child.archive_path_);
   return archive;

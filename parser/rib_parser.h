@@ -23,6 +23,7 @@
 #include "parser/diagnostics.h"
 #include "parser/inline_archives.h"
 #include "parser/request_reader.h"
+#include "parser/rib_file.h"
 #include "parser/ri_target.h"
 #include "parser/run_program.h"
 
@@ -49,20 +50,33 @@ class RibParser {
   // or opened and no program started: for input that must not reach the system (fuzzing).
   void allow_archive_files(bool allowed) { archive_files_allowed_ = allowed; }
 
+  // The most bytes of text one file (an input, an archive, a .gz once decompressed) may give;
+  // 0 (the default): no limit. `source` says where the limit comes from, for the message.
+  void set_text_limit(std::uint64_t bytes, const std::string& source) {
+    text_limits_.max_bytes = bytes;
+    text_limits_.max_bytes_source = source;
+  }
+
   // Parse each archive once and replay it from `cache` at later ReadArchives of it (nullptr,
   // the default: every ReadArchive reads and parses its file). The cache must outlive the parser;
   // one cache serves every parser of a run.
   void use_archive_cache(ArchiveCache* cache) { archive_cache_ = cache; }
 
-  // Procedurals (rib_parser_procedural.cpp). The folders RunProgram may start programs from
-  // besides those of Option "searchpath" "procedural" (--procedural-path); "@" in that option
-  // stands for them.
-  // Relative folders are taken from the current directory.
+  // Procedurals (rib_parser_procedural.cpp). The folders the user allows RunProgram to start
+  // programs from (--procedural-path, DARC_PROCEDURAL_PATH): the procedural search path until the
+  // RIB sets one, "@" in Option "searchpath" "procedural", and the most that option may keep
+  // (procedural_folders.h). Relative folders are taken from the current directory.
   void set_procedural_folders(const std::vector<std::string>& folders);
+  // --trust-rib: the RIB's procedural search path is kept as it says, even where it leaves the
+  // user's folders (each such folder is reported once, as a warning at its Option).
+  void set_trust_rib(bool trusted) { trust_rib_ = trusted; }
   // The time and output limits of one RunProgram request (--procedural-timeout).
   void set_run_program_limits(const RunProgramLimits& limits) { run_program_limits_ = limits; }
-  // The procedural search path currently in effect (from Option "searchpath" "procedural").
-  const std::vector<std::string>& procedural_search_path() const { return procedural_path_; }
+  // The procedural search path currently in effect: the user's folders until the RIB sets
+  // Option "searchpath" "procedural", then what was kept of it.
+  const std::vector<std::string>& procedural_search_path() const {
+    return procedural_path_set_ ? procedural_path_ : procedural_folders_;
+  }
 
  private:
   // What is being read: one file's text or one inline archive's body. Conditional blocks must
@@ -89,6 +103,8 @@ class RibParser {
   void archive_begin(RequestReader& args, const SourceLoc& loc);
   // Procedural, Procedural2 (rib_parser_procedural.cpp).
   void procedural(RequestReader& args, const std::string& request, const SourceLoc& loc);
+  // Option "searchpath" "procedural": `folders` (expanded, absolute) narrowed to the user's.
+  void set_procedural_search_path(const std::vector<std::string>& folders, const SourceLoc& loc);
   void run_procedural_program(const std::string& program, const std::string& data, double detail, const SourceLoc& loc);
   // Reads a procedural's RIB (`read` calls the parser) in the graphics state of its request.
   void expand_procedural(const std::function<void()>& read, const SourceLoc& loc);
@@ -104,9 +120,11 @@ class RibParser {
   // Keeps conditions_ in step with the block requests the target accepted.
   void track_block(const std::string& request);
   std::string resolve_archive(const std::string& name) const;
+  // Reads an archive's text (a regular file, within the text limit); a RibError says why not.
+  std::string read_archive_text(const std::string& name, const std::string& path) const;
   // ReadArchive through the cache: replays the file's entry, or parses the file into one (or,
   // for an archive whose parse cannot be replayed, parses it straight into the target).
-  void include_cached_archive(const std::string& path, const std::string& canonical);
+  void include_cached_archive(const std::string& name, const std::string& path, const std::string& canonical);
   // Parses `text` of the archive `path` into a recording; nullopt when the recording could not
   // reproduce the parse (an ErrorHandler inside, or more errors than were shown).
   std::optional<RecordedArchive> record_archive(std::string text, const std::string& path);
@@ -124,13 +142,16 @@ class RibParser {
   TextScope* scope_ = nullptr;  // the innermost text being read
   bool archive_files_allowed_ = true;
   ArchiveCache* archive_cache_ = nullptr;
+  RibReadLimits text_limits_;  // for the command line's files; archives are regular files only too
   // While this parser records an archive for the cache: the files the recording depends on.
   std::vector<FileStamp>* recorded_files_ = nullptr;
   // Conditional RIB, inline archives or procedurals were used (the archive cache does not
   // replay such text: it depends on the moment, or starts programs).
   bool read_parser_state_ = false;
-  std::vector<std::string> procedural_path_;     // Option "searchpath" "procedural", absolute
-  std::vector<std::string> procedural_folders_;  // --procedural-path
+  std::vector<std::string> procedural_path_;     // what was kept of Option "searchpath" "procedural"
+  bool procedural_path_set_ = false;             // the RIB has set procedural_path_
+  std::vector<std::string> procedural_folders_;  // the user's: --procedural-path, DARC_PROCEDURAL_PATH
+  bool trust_rib_ = false;                       // --trust-rib
   RunProgramLimits run_program_limits_;
 };
 

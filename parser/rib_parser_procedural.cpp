@@ -1,6 +1,7 @@
 // RibParser's procedurals. DelayedReadArchive (and Procedural2 "DelayedReadArchive2") reads its
-// archive as ReadArchive does; RunProgram starts a generator from a trusted folder
-// (program_search.h), exchanges one request with it (run_program.h) and reads its answer;
+// archive as ReadArchive does; RunProgram starts a generator from a trusted folder (the user's,
+// or those the RIB's search path keeps of them: procedural_folders.h, program_search.h),
+// exchanges one request with it (run_program.h) and reads its answer;
 // DynamicLoad is skipped with one warning. What a procedural produces is read where its request
 // stands, between AttributeBegin and AttributeEnd: PRMan expands a procedural later, in the
 // graphics state saved at its request, so nothing it sets reaches the requests after it.
@@ -18,6 +19,7 @@
 
 #include "parser/lexer.h"
 #include "parser/procedural.h"
+#include "parser/procedural_folders.h"
 #include "parser/program_search.h"
 #include "parser/rib_parser.h"
 
@@ -55,6 +57,35 @@ void RibParser::set_procedural_folders(const std::vector<std::string>& folders) 
   }
 }
 
+void RibParser::set_procedural_search_path(const std::vector<std::string>& folders, const SourceLoc& loc) {
+  std::vector<std::string> kept;
+  for (const std::string& dir : folders) {
+    const RibFolderVerdict verdict = judge_rib_folder(dir, procedural_folders_, trust_rib_);
+    const std::string shown = verdict.canonical.empty() || verdict.canonical == dir
+                                  ? fmt::format("\"{}\"", dir)
+                                  : fmt::format("\"{}\" ({})", dir, verdict.canonical);
+    switch (verdict.kind) {
+      case RibFolderVerdict::Kind::Allowed:
+        kept.push_back(dir);
+        break;
+      case RibFolderVerdict::Kind::Trusted:
+        diag_.warning_once("trusted procedural folder " + dir, loc, "Option",
+                           fmt::format("trusting the procedural folder {} that the RIB chose (--trust-rib): {}; "
+                                       "programs in it may run",
+                                       shown, verdict.reason));
+        kept.push_back(dir);
+        break;
+      case RibFolderVerdict::Kind::Dropped:
+        diag_.warning(loc, "Option",
+                      fmt::format("procedural folder {} dropped from the search path: {}; {}", shown, verdict.reason,
+                                  how_to_allow_procedural_folder(verdict.canonical.empty() ? dir : verdict.canonical)));
+        break;
+    }
+  }
+  procedural_path_ = std::move(kept);
+  procedural_path_set_ = true;
+}
+
 void RibParser::procedural(RequestReader& args, const std::string& request, const SourceLoc& loc) {
   read_parser_state_ = true;  // an archive holding procedurals is not replayed from the cache
   const ProceduralCall call = read_procedural(args, request);
@@ -87,8 +118,18 @@ void RibParser::run_procedural_program(const std::string& program, const std::st
   if (include_stack_.size() >= kMaxProceduralDepth)
     throw RibError(
         fmt::format("RunProgram \"{}\": procedurals nested deeper than {} levels", name, kMaxProceduralDepth));
-  std::vector<std::string> folders = procedural_path_;
-  folders.insert(folders.end(), procedural_folders_.begin(), procedural_folders_.end());
+  const std::vector<std::string>& folders = procedural_search_path();
+  if (folders.empty()) {
+    if (!procedural_folders_.empty())
+      throw RibError(fmt::format(
+          "RunProgram: program \"{}\" refused: the scene's procedural search path kept no folder (see the warnings "
+          "at its Option \"searchpath\" \"procedural\")",
+          name));
+    throw RibError(fmt::format(
+        "RunProgram: program \"{}\" refused: no folder is allowed to hold procedural programs; allow the "
+        "generator's folder with --procedural-path DIR or in DARC_PROCEDURAL_PATH (docs/threat-model.md)",
+        name));
+  }
   const ProgramSearch found = find_program(name, folders);
   if (found.path.empty()) throw RibError("RunProgram: " + found.error);
   argv[0] = found.path;

@@ -23,6 +23,13 @@ inline constexpr uint64_t kFrameBytesPerSurface = 512;
 // Each point of a polygon's loops (its 2D copy, index and loop bookkeeping).
 inline constexpr uint64_t kFrameBytesPerPolygonPoint = 32;
 
+// A pixel of the image: the film's sums (48 B), the resolved image (20 B: R, G, B, A, Z), and
+// what writing it holds (the converted buffer, OpenImageIO's own), 122 B measured as the peak
+// resident growth of a 4096x4096 frame of one sphere over a 256x256 one (docs/memory.md),
+// rounded up. A Format of 16384x16384 is 34 GB: a frame over the limit fails at its first
+// geometry request, or at WorldEnd, before the image is allocated.
+inline constexpr uint64_t kFrameBytesPerPixel = 128;
+
 inline uint64_t frame_memory_estimate(uint64_t curve_segments, uint64_t surfaces, uint64_t polygon_points) {
   return curve_segments * kFrameBytesPerCurveSegment + surfaces * kFrameBytesPerSurface +
          polygon_points * kFrameBytesPerPolygonPoint;

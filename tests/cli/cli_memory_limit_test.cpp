@@ -43,7 +43,7 @@ TEST(CliMemoryLimit, FrameOverTheLimitIsAnErrorAtItsRequestAndWritesNothing) {
   write_file(dir / "hair.rib", hair_frame(20000));  // 200k segments
   const RunResult r = run_darc(dir.path(), "--memory-limit 20M hair.rib");
   EXPECT_EQ(r.exit_code, kExitSceneError) << r.err;
-  EXPECT_NE(r.err.find("hair.rib:8:1: error: Curves: the frame's geometry would need about"), std::string::npos)
+  EXPECT_NE(r.err.find("hair.rib:8:1: error: Curves: the frame would need about"), std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("the limit is 20 MB, from --memory-limit); the frame is not rendered"), std::string::npos)
       << r.err;
@@ -52,6 +52,22 @@ TEST(CliMemoryLimit, FrameOverTheLimitIsAnErrorAtItsRequestAndWritesNothing) {
   const RunResult fits = run_darc(dir.path(), "--memory-limit 2G hair.rib");
   EXPECT_EQ(fits.exit_code, 0) << fits.err;
   EXPECT_TRUE(fs::exists(dir / "out.exr"));
+}
+
+// The image counts too (128 bytes a pixel): a Format of 16384x16384 (32 GB) fails before the
+// image is allocated, at its first geometry request, and writes nothing.
+TEST(CliMemoryLimit, AnImageLargerThanTheLimitFailsBeforeItIsAllocated) {
+  ScratchDir dir("memory-image");
+  write_file(dir / "huge.rib",
+             "Display \"huge.exr\" \"file\" \"rgba\"\nFormat 16384 16384 1\nPixelSamples 1 1\n"
+             "Projection \"perspective\" \"fov\" [40]\nTranslate 0 0 5\nWorldBegin\nSphere 1 -1 1 360\nWorldEnd\n");
+  const RunResult r = run_darc(dir.path(), "--memory-limit 4G huge.rib");
+  EXPECT_EQ(r.exit_code, kExitSceneError) << r.err;
+  EXPECT_NE(r.err.find("huge.rib:7:1: error: Sphere: the frame would need about 32.0 GB with this request (its "
+                       "geometry and 32.0 GB for its image), more than the"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "huge.exr"));
 }
 
 TEST(CliMemoryLimit, MalformedLimitIsAUsageError) {
@@ -133,7 +149,7 @@ TEST(CliMemoryLimit, CgroupLimitFailsTheFrameInsteadOfTheOomKiller) {
   ASSERT_TRUE(WIFEXITED(status)) << "killed (by the OOM killer?): " << err;
   // sh's exit status is darc's; 128 + 9 would be a SIGKILL seen by sh.
   EXPECT_EQ(WEXITSTATUS(status), kExitSceneError) << err;
-  EXPECT_NE(err.find("error: Curves: the frame's geometry would need about"), std::string::npos) << err;
+  EXPECT_NE(err.find("error: Curves: the frame would need about"), std::string::npos) << err;
   EXPECT_NE(err.find("cgroup"), std::string::npos) << "the message says where the limit comes from: " << err;
   EXPECT_FALSE(fs::exists(dir / "out.exr"));
 

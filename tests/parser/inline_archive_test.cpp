@@ -141,13 +141,13 @@ TEST(InlineArchive, AStrayArchiveEndIsAnError) {
 TEST(InlineArchive, AnUnknownNameStillFallsBackToFiles) {
   auto r = parse_rib("ArchiveBegin \"a\" Sides 1 ArchiveEnd\nReadArchive \"b\"\n");
   ASSERT_EQ(r->errors().size(), 1u);
-  EXPECT_EQ(r->errors()[0].message, "cannot open archive \"b\"");
+  EXPECT_EQ(r->errors()[0].message, "cannot open archive \"b\": no such file");
 }
 
 TEST(InlineArchive, ArchiveBeginInABranchNotTakenDefinesNothing) {
   auto r = parse_rib("IfBegin \"0\" ArchiveBegin \"a\" Sides 1 ArchiveEnd IfEnd\nReadArchive \"a\"\n");
   ASSERT_EQ(r->errors().size(), 1u);
-  EXPECT_EQ(r->errors()[0].message, "cannot open archive \"a\"");
+  EXPECT_EQ(r->errors()[0].message, "cannot open archive \"a\": no such file");
 }
 
 }  // namespace

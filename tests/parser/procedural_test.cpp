@@ -118,7 +118,7 @@ TEST(Procedural, AMissingDelayedArchiveIsAnErrorAtTheRequest) {
                             (dir / "scene.rib").string());
   const auto errors = r->errors();
   ASSERT_EQ(errors.size(), 1u);
-  EXPECT_EQ(errors[0].message, "cannot open archive \"none.rib\"");
+  EXPECT_EQ(errors[0].message, "cannot open archive \"none.rib\": no such file");
   EXPECT_EQ(errors[0].loc.line, 2);
   EXPECT_EQ(errors[0].loc.column, 2);
   // The attribute block opened for it is closed again.

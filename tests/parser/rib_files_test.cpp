@@ -91,7 +91,7 @@ TEST(RibFiles, MissingArchiveIsAnErrorAtTheRequest) {
   auto r = parse_file(main);
   EXPECT_FALSE(r->ok);
   ASSERT_EQ(r->diag.error_count(), 1);
-  EXPECT_EQ(r->diag.all()[0].message, "cannot open archive \"x.rib\"");
+  EXPECT_EQ(r->diag.all()[0].message, "cannot open archive \"x.rib\": no such file");
   EXPECT_EQ(r->diag.all()[0].loc.line, 2);
   EXPECT_EQ(r->diag.all()[0].loc.column, 3);
   EXPECT_EQ(r->target.named("WorldEnd").size(), 1u);

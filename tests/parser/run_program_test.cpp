@@ -1,5 +1,6 @@
-// Procedural "RunProgram": which programs may run (only from the procedural search path and the
-// --procedural-path folders; no way out by '..' or symbolic links), the exchange with the program
+// Procedural "RunProgram": which programs may run (only from the user's folders, or the part of
+// them the RIB's procedural search path keeps; no way out by '..' or symbolic links; --trust-rib
+// widens, with a warning), the exchange with the program
 // (request line, answer up to \377), and every way it can fail as an error at the request's
 // position: a time limit, an exit status, a signal, bad RIB, a missing terminator, too much output.
 #include <gtest/gtest.h>
@@ -33,10 +34,12 @@ std::function<void(RibParser&)> folder_and_limits(const std::string& dir, RunPro
 TEST(RunProgram, AProgramOnTheSearchPathAnswersWithRib) {
   ScratchFolder dir;
   dir.write_program("bin/gen.sh", "read detail data\nprintf 'Sphere %s -1 1 360\\n\\377' \"$data\"\n");
+  // The user allows the scratch folder; the scene narrows the path to its bin.
   auto r = parse_procedural("Option \"searchpath\" \"procedural\" [\"" + (dir / "bin").string() +
                                 "\"]\nWorldBegin\nProcedural \"RunProgram\" [\"gen.sh\" \"2.5\"] [-3 3 -3 3 -3 3]\n"
                                 "WorldEnd\n",
-                            (dir / "scene.rib").string());
+                            (dir / "scene.rib").string(), folders({dir.str()}));
+  EXPECT_TRUE(r->warnings().empty()) << r->warnings()[0].str();
   EXPECT_TRUE(r->ok) << r->first_error();
   const auto spheres = r->target.named("Sphere");
   ASSERT_EQ(spheres.size(), 1u);
@@ -67,8 +70,8 @@ TEST(RunProgram, WithoutASearchPathNothingRuns) {
   const auto errors = r->errors();
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_TRUE(contains(errors[0].message,
-                       "refused: programs run only from the folders of Option \"searchpath\" "
-                       "\"procedural\" and --procedural-path"))
+                       "refused: no folder is allowed to hold procedural programs; allow the generator's folder "
+                       "with --procedural-path DIR or in DARC_PROCEDURAL_PATH"))
       << errors[0].message;
   EXPECT_EQ(errors[0].loc.str(), "scene.rib:2:1");
   EXPECT_FALSE(fs::exists(dir / "started"));
@@ -152,20 +155,22 @@ TEST(ProgramSearch, FoldersAreSearchedInOrder) {
 TEST(RunProgram, TheSearchPathTakesAmpersandAtAndRelativeFolders) {
   ScratchFolder dir;
   dir.write_program("cli/from_cli.sh", "printf 'Sides 1\\n\\377'\n");
-  dir.write_program("scene/bin/beside.sh", "printf 'Sides 2\\n\\377'\n");
-  dir.write_program("abs/absolute.sh", "printf 'Sides 3\\n\\377'\n");
-  // "bin" is relative to the scene file; "&" keeps the previous path; "@" is --procedural-path.
-  auto r = parse_procedural("Option \"searchpath\" \"procedural\" [\"" + (dir / "abs").string() +
+  dir.write_program("lib/scene/bin/beside.sh", "printf 'Sides 2\\n\\377'\n");
+  dir.write_program("lib/abs/absolute.sh", "printf 'Sides 3\\n\\377'\n");
+  // The user allows cli and lib. "bin" is relative to the scene file; "&" keeps the previous path
+  // (lib/abs, found by nothing else); "@" is the user's folders.
+  auto r = parse_procedural("Option \"searchpath\" \"procedural\" [\"" + (dir / "lib/abs").string() +
                                 "\"]\n"
                                 "Option \"searchpath\" \"procedural\" [\"bin:&:@\"]\n"
                                 "Procedural \"RunProgram\" [\"from_cli.sh\" \"\"] [0 1 0 1 0 1]\n"
                                 "Procedural \"RunProgram\" [\"beside.sh\" \"\"] [0 1 0 1 0 1]\n"
                                 "Procedural \"RunProgram\" [\"absolute.sh\" \"\"] [0 1 0 1 0 1]\n",
-                            (dir / "scene/main.rib").string(), [&](RibParser& p) {
-                              p.set_procedural_folders({(dir / "cli").string()});
-                              ASSERT_TRUE(p.procedural_search_path().empty());
+                            (dir / "lib/scene/main.rib").string(), [&](RibParser& p) {
+                              p.set_procedural_folders({(dir / "cli").string(), (dir / "lib").string()});
+                              ASSERT_EQ(p.procedural_search_path().size(), 2u) << "the user's, until the RIB sets one";
                             });
   EXPECT_TRUE(r->ok) << r->first_error();
+  EXPECT_TRUE(r->warnings().empty()) << r->warnings()[0].str();
   const auto sides = r->target.named("Sides");
   ASSERT_EQ(sides.size(), 3u);
   EXPECT_EQ(sides[0].numbers[0], 1);
@@ -311,7 +316,7 @@ TEST(RunProgram, TheGrassGeneratorWritesTheBladesAskedFor) {
   const std::string rib = "Option \"searchpath\" \"procedural\" [\"" + scenes +
                           "\"]\nProcedural \"RunProgram\" [\"grass.py\" \"25 7\"] [-1.3 1.3 0 0.5 -1.3 1.3]\n"
                           "Procedural \"RunProgram\" [\"grass.py\" \"25 7\"] [-1.3 1.3 0 0.5 -1.3 1.3]\n";
-  auto r = parse_procedural(rib, "scene.rib");
+  auto r = parse_procedural(rib, "scene.rib", folders({scenes}));
   EXPECT_TRUE(r->ok) << r->first_error();
   const auto curves = r->target.named("Curves");
   ASSERT_EQ(curves.size(), 2u);

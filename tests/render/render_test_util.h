@@ -53,6 +53,9 @@ struct RunResult {
 struct RunOptions {
   bool quiet = true;    // pass --quiet (no progress lines, no "wrote" lines)
   fs::path stdin_file;  // empty: standard input is /dev/null
+  // Variables for darc's environment, as the shell writes them ("NAME='value' ..."). The user's
+  // DARC_PROCEDURAL_PATH is never passed on: what a test allows, it sets here.
+  std::string environment;
 };
 
 inline std::string read_text_file(const fs::path& p) {
@@ -60,14 +63,14 @@ inline std::string read_text_file(const fs::path& p) {
   return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
 }
 
-// Runs `darc ARGS` with the working directory `cwd`; captures stdout and stderr (into
-// stdout.txt / stderr.txt in `cwd`). stderr is a file, so darc sees no terminal.
+// Runs `darc ARGS` with the working directory `cwd` and options.environment; captures stdout and
+// stderr (into stdout.txt / stderr.txt in `cwd`). stderr is a file, so darc sees no terminal.
 inline RunResult run_darc(const fs::path& cwd, const std::string& args, const RunOptions& options) {
   const fs::path outfile = cwd / "stdout.txt", errfile = cwd / "stderr.txt";
   const std::string input = options.stdin_file.empty() ? std::string("/dev/null") : options.stdin_file.string();
-  std::string cmd = "cd '" + cwd.string() + "' && '" + std::string(DARC_BINARY) + "' " +
-                    (options.quiet ? "--quiet " : "") + args + " < '" + input + "' > '" + outfile.string() + "' 2> '" +
-                    errfile.string() + "'";
+  std::string cmd = "cd '" + cwd.string() + "' && env -u DARC_PROCEDURAL_PATH " + options.environment + " '" +
+                    std::string(DARC_BINARY) + "' " + (options.quiet ? "--quiet " : "") + args + " < '" + input +
+                    "' > '" + outfile.string() + "' 2> '" + errfile.string() + "'";
   int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

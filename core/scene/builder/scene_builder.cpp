@@ -107,6 +107,7 @@ void SceneBuilder::world_begin(const SourceLoc& loc) {
 void SceneBuilder::start_scene(const SourceLoc& loc) {
   scene_ = std::make_unique<Scene>();
   frame_memory_estimate_ = 0;
+  image_memory_ = 0;
   frame_over_memory_ = false;
   geometry_key_.clear();
   geometry_key_valid_ = true;
@@ -123,6 +124,7 @@ void SceneBuilder::start_scene(const SourceLoc& loc) {
   out.has_frame_number = has_frame_number_;
   check_crop_window(out);
   s.output = out;
+  count_image_memory(out);
 
   Camera& cam = s.camera;
   cam.projection = options_.projection;
@@ -175,6 +177,7 @@ void SceneBuilder::close_blocks_left_open_in_world(const SourceLoc& loc) {
 
 void SceneBuilder::world_end(const SourceLoc& loc) {
   close_blocks_left_open_in_world(loc);
+  check_frame_memory_at_world_end(loc);
   pop_block(Block::World, "WorldEnd", loc);
   attributes_ = saved_attributes_.back();
   saved_attributes_.pop_back();

@@ -33,6 +33,10 @@ struct FrameOverrides {
   // 0: no limit. The source says where the limit comes from, for the message.
   uint64_t memory_limit_bytes = 0;
   std::string memory_limit_source;
+  // The folder Display names must stay inside (canonical; core/display_confinement.h); a name
+  // that leaves it is an error at the Display request, and the frame is written under the name's
+  // last component in this folder. Empty: anywhere (-o names the output, or --trust-rib).
+  std::string display_folder;
 };
 
 class SceneBuilder : public RiTarget {
@@ -86,6 +90,12 @@ class SceneBuilder : public RiTarget {
   // Throws RibError at the request that takes the frame over the limit; false for the frame's
   // later geometry, which is no longer built.
   bool reserve_frame_memory(uint64_t curve_segments, uint64_t surfaces, uint64_t polygon_points);
+  // The image's share of the frame's memory (core/frame_memory.h), counted at WorldBegin with the
+  // geometry that follows; a frame whose image alone takes it over the limit fails at WorldEnd,
+  // before the image is allocated.
+  void count_image_memory(const OutputSettings& out);
+  void check_frame_memory_at_world_end(const SourceLoc& loc);
+  std::string frame_memory_error(const char* with) const;
   // The id of the cached-archive call being replayed (RiTarget::replayed_request), 0 for any other.
   uint64_t replayed_id() const;
   // Adds a geometry request to the frame's geometry key (Scene::geometry_key); a request that
@@ -93,6 +103,9 @@ class SceneBuilder : public RiTarget {
   void note_geometry(uint64_t id);
   // Options may only change outside the world block.
   bool option_allowed(const char* request, const SourceLoc& loc);
+  // The Display name to keep: `name`, or when it leaves FrameOverrides::display_folder, an error
+  // at the request and the name the frame is written to instead.
+  std::string confined_display_name(const std::string& name, const SourceLoc& loc);
   uint32_t make_material(const SourceLoc& loc);
   bool object_space_left_handed() const;
   Vec3f to_world(const float* p) const;
@@ -182,7 +195,8 @@ class SceneBuilder : public RiTarget {
   int frames_ready_ = 0, frames_failed_ = 0;
 
   std::unique_ptr<Scene> scene_;  // the frame being built (inside the world block)
-  uint64_t frame_memory_estimate_ = 0;  // core/scene/frame_memory.h, of the geometry built so far
+  uint64_t frame_memory_estimate_ = 0;  // core/scene/frame_memory.h, of the image and the geometry built so far
+  uint64_t image_memory_ = 0;           // the image's part of it
   bool frame_over_memory_ = false;      // the frame went over memory_limit_bytes: not rendered
   // Archive reuse (parser/archive_cache.h): the id of the replayed call being made, the curves
   // built from each replayed Curves call with what they depend on besides the call itself

@@ -26,13 +26,29 @@ bool SceneBuilder::reserve_frame_memory(uint64_t curve_segments, uint64_t surfac
   frame_memory_estimate_ += frame_memory_estimate(curve_segments, surfaces, polygon_points);
   if (frame_memory_estimate_ <= overrides_.memory_limit_bytes) return true;
   frame_over_memory_ = true;
+  throw RibError(frame_memory_error("with this request"));
+}
+
+void SceneBuilder::count_image_memory(const OutputSettings& out) {
+  if (overrides_.memory_limit_bytes == 0) return;
+  image_memory_ = uint64_t(out.xres) * uint64_t(out.yres) * kFrameBytesPerPixel;
+  frame_memory_estimate_ += image_memory_;
+}
+
+std::string SceneBuilder::frame_memory_error(const char* with) const {
   // (The parser prefixes the message with the request's name and position.)
-  throw RibError("the frame's geometry would need about " +
-                 format_bytes(frame_memory_estimate_) + " with this request, more than the " +
-                 format_bytes(overrides_.memory_limit_bytes) + " a frame may use (" +
-                 (overrides_.memory_limit_source.empty() ? std::string("--memory-limit")
-                                                         : overrides_.memory_limit_source) +
-                 "); the frame is not rendered");
+  return "the frame would need about " + format_bytes(frame_memory_estimate_) + " " + with + " (its geometry and " +
+         format_bytes(image_memory_) + " for its image), more than the " +
+         format_bytes(overrides_.memory_limit_bytes) + " a frame may use (" +
+         (overrides_.memory_limit_source.empty() ? std::string("--memory-limit") : overrides_.memory_limit_source) +
+         "); the frame is not rendered";
+}
+
+void SceneBuilder::check_frame_memory_at_world_end(const SourceLoc& loc) {
+  if (overrides_.memory_limit_bytes == 0 || frame_over_memory_ || frame_skipped_) return;
+  if (frame_memory_estimate_ <= overrides_.memory_limit_bytes) return;
+  frame_over_memory_ = true;
+  diag_.error(loc, "WorldEnd", frame_memory_error("in all"));
 }
 
 uint64_t SceneBuilder::replayed_id() const {

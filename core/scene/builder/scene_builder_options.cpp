@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/scene/builder/display_confinement.h"
 #include "core/scene/builder/shader_parameter_checks.h"
 #include "core/scene/builder/unused_request_checks.h"
 
@@ -172,9 +173,24 @@ void SceneBuilder::display(const std::string& name, const std::string& type, con
     diag_.warning(loc, "Display", "display mode \"" + mode + "\" not supported: using rgba");
     m = "rgba";
   }
-  options_.output.display_name = name;
+  options_.output.display_name = confined_display_name(name, loc);
   options_.output.display_type = type;
   options_.output.display_mode = m;
+}
+
+std::string SceneBuilder::confined_display_name(const std::string& name, const SourceLoc& loc) {
+  if (overrides_.display_folder.empty()) return name;
+  const DisplayNameCheck check = check_display_name(name, overrides_.display_folder);
+  if (check.allowed) return name;
+  // The frame is still written (the rest of the request holds), where it cannot harm: under the
+  // name's last component in the working folder, or the name in effect when there is none.
+  const std::string written = check.fallback.empty() ? options_.output.display_name : check.fallback;
+  diag_.error(loc, "Display",
+              fmt::format("Display name \"{}\" refused: {}; a RIB's Display name must stay inside the working "
+                          "folder ({}): the frame is written to \"{}\" there instead (-o names any file; "
+                          "--trust-rib lifts this rule)",
+                          name, check.reason, overrides_.display_folder, written));
+  return written;
 }
 
 void SceneBuilder::hider(const std::string& type, const ParamList&, const SourceLoc& loc) {

@@ -51,7 +51,7 @@ TEST(FrameMemory, EstimateCoversTheCurvesAndEitherAcceleratorAfterTheBuild) {
 TEST(FrameMemory, FrameOverTheLimitFailsAtTheRequestThatCrossesItAndRendersNothing) {
   FrameOverrides limits;
   // Room for the first request (1000 strands, 10000 segments) but not for the second.
-  limits.memory_limit_bytes = frame_memory_estimate(15000, 0, 0);
+  limits.memory_limit_bytes = frame_memory_estimate(15000, 0, 0) + 640 * 480 * kFrameBytesPerPixel;  // + the image
   limits.memory_limit_source = "the limit is a test's";
   const std::string rib = "FrameBegin 1\nWorldBegin\n" + curves_line(1000, 1) + "Sphere 1 -1 1 360\n" +
                           curves_line(1000, 2) + "Sphere 1 -1 1 360\nWorldEnd\nFrameEnd\n" + "FrameBegin 2\n" +
@@ -73,6 +73,31 @@ TEST(FrameMemory, FrameOverTheLimitFailsAtTheRequestThatCrossesItAndRendersNothi
     EXPECT_NE(d.message.find("the frame is not rendered"), std::string::npos) << d.str();
   }
   EXPECT_EQ(errors, 1u) << "one error: the frame's later geometry is skipped without more messages";
+}
+
+// The image counts with the geometry (kFrameBytesPerPixel): a frame whose image alone passes the
+// limit fails at WorldEnd when it has no geometry, and at its first geometry request otherwise.
+TEST(FrameMemory, AnImageOverTheLimitFailsTheFrame) {
+  FrameOverrides limits;
+  limits.memory_limit_bytes = 1000 * 1000 * kFrameBytesPerPixel;  // a 1000x1000 image, nothing else
+  limits.memory_limit_source = "a test's";
+  Built b = build("Format 2000 1000 1\nFrameBegin 1\nWorldBegin\nWorldEnd\nFrameEnd\n"
+                  "FrameBegin 2\nWorldBegin\nSphere 1 -1 1 360\nWorldEnd\nFrameEnd\n"
+                  "Format 1000 1000 1\nFrameBegin 3\nWorldBegin\nWorldEnd\nFrameEnd\n",
+                  {}, limits);
+  EXPECT_EQ(b.failed, (std::vector<int>{1, 2}));
+  ASSERT_EQ(b.scenes.size(), 1u) << "the image that fits renders";
+  EXPECT_EQ(b.scenes[0].output.frame_number, 3);
+  std::vector<Diagnostic> errors;
+  for (const Diagnostic& d : b.diagnostics)
+    if (d.severity == Severity::Error) errors.push_back(d);
+  ASSERT_EQ(errors.size(), 2u);
+  EXPECT_EQ(errors[0].loc.line, 4);
+  EXPECT_EQ(errors[0].request, "WorldEnd");
+  EXPECT_EQ(errors[0].message, "the frame would need about 244 MB in all (its geometry and 244 MB for its image), "
+                               "more than the 122 MB a frame may use (a test's); the frame is not rendered");
+  EXPECT_EQ(errors[1].loc.line, 8);
+  EXPECT_EQ(errors[1].request, "Sphere");
 }
 
 TEST(FrameMemory, NoLimitBuildsEverything) {
