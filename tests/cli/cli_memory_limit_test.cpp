@@ -2,11 +2,12 @@
 // request that crosses the limit and writes nothing, instead of being killed by the kernel's OOM
 // killer; --memory-limit sets the limit, and a real memory cgroup (what a Slurm job's --mem or a
 // container sets) is found on its own.
-#include "render/render_test_util.h"
-
 #include <csignal>
-#include <cstdio>
 #include <random>
+
+#include "support/cubic_strands.h"
+#include "support/darc_command.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {
@@ -17,24 +18,17 @@ constexpr int kExitSceneError = 3;
 // A frame of `strands` random hair strands (10 cubic Bézier segments each), 1000 per Curves
 // request, rendered at 32x24 to out.exr.
 std::string hair_frame(int strands) {
+  constexpr int kPerRequest = 1000;
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  Vec3f root;
+  const StrandPoint point = [&](int, int v) {
+    if (v == 0) root = Vec3f{u(rng), u(rng), u(rng)};
+    return Vec3f{root.x + 0.01f * float(v), root.y + 0.005f * float(v), root.z};
+  };
   std::string rib = "Display \"out.exr\" \"file\" \"rgba\"\nFormat 32 24 1\nPixelSamples 1 1\n"
                     "Projection \"perspective\" \"fov\" [40]\nTranslate 0 0 5\nWorldBegin\nSurface \"constant\"\n";
-  char point[64];
-  for (int first = 0; first < strands; first += 1000) {
-    rib += "Curves \"cubic\" [";
-    for (int i = 0; i < 1000; ++i) rib += " 31";
-    rib += "] \"nonperiodic\" \"P\" [";
-    for (int i = 0; i < 1000; ++i) {
-      const float x = u(rng), y = u(rng), z = u(rng);
-      for (int v = 0; v < 31; ++v) {
-        std::snprintf(point, sizeof point, " %.3f %.3f %.3f", x + 0.01f * float(v), y + 0.005f * float(v), z);
-        rib += point;
-      }
-    }
-    rib += "] \"constantwidth\" [0.005]\n";
-  }
+  for (int first = 0; first < strands; first += kPerRequest) rib += cubic_strands(kPerRequest, 31, point, 0.005f);
   return rib + "WorldEnd\n";
 }
 

@@ -29,4 +29,24 @@ std::string perspective_frame(int width, int height, int samples, float fov_degr
   return s.str();
 }
 
+std::string tiny_world_rib() {
+  return "WorldBegin\n"
+         "  Surface \"constant\"\n"
+         "  Color [1 0.5 0.25]\n"
+         "  Curves \"cubic\" [4] \"nonperiodic\" \"P\" [-1 -1 0  -0.3 0.5 -0.5  0.3 -0.5 -0.5  1 1 0]"
+         " \"constantwidth\" [0.1]\n"
+         "  Color [0.2 0.4 0.9]\n"
+         "  Sphere 0.5 -0.5 0.5 360\n"
+         "WorldEnd\n";
+}
+
+std::string tiny_frame_rib(int frame, const std::string& display, const std::string& mode, int width, int height) {
+  return "FrameBegin " + std::to_string(frame) + "\n" + "Display \"" + display + "\" \"file\" \"" + mode + "\"\n" +
+         "Format " + std::to_string(width) + " " + std::to_string(height) + " 1\n" +
+         "PixelSamples 1 1\n"
+         "Projection \"perspective\" \"fov\" [40]\n"
+         "Translate 0 0 5\n" +
+         tiny_world_rib() + "FrameEnd\n";
+}
+
 }  // namespace darc::test
