@@ -6,8 +6,8 @@ namespace darc::test {
 
 std::string cubic_strands(int strands, int vertices, const StrandPoint& point, float width) {
   std::string rib = "Curves \"cubic\" [";
-  const std::string count = " " + std::to_string(vertices);
-  for (int i = 0; i < strands; ++i) rib += count;
+  const std::string count = std::to_string(vertices);
+  for (int i = 0; i < strands; ++i) rib.append(" ").append(count);
   rib += "] \"nonperiodic\" \"P\" [";
   char text[64];
   for (int i = 0; i < strands; ++i)
