@@ -8,21 +8,16 @@
 
 #include "support/darc_command.h"
 #include "support/pixel_counts.h"
+#include "support/shared_ribs.h"
 
 namespace darc::test {
 namespace {
-
-fs::path realworld_ribs() { return fs::path(DARC_SHARED_RIBS_DIR) / "realworld"; }
-
-#define REQUIRE_REALWORLD_RIBS()              \
-  if (!fs::is_directory(realworld_ribs())) \
-  GTEST_SKIP() << "real-world RIBs not found at " << realworld_ribs() << ": conformance skipped"
 
 // Renders a file in a scratch directory (its outputs land there, named by its Display lines) and
 // reads `image`, the one the test looks at.
 FileRender render_realworld(const ScratchDir& dir, const std::string& file, const std::string& image,
                             const std::string& extra = "") {
-  return render_file(dir, realworld_ribs() / file, extra + " --threads 2", image);
+  return render_file(dir, shared_ribs("realworld") / file, extra + " --threads 2", image);
 }
 
 // The sizes of the 4-connected regions of "on" pixels with at least min_size pixels, largest first.
@@ -61,7 +56,7 @@ std::vector<int> regions(const Pixels& p, const PixelTest& on, int min_size) {
 const PixelTest lit = [](float r, float g, float b) { return r + g + b > 0.15f; };
 
 TEST(RealworldRibs, Bug940418ManyCubicStrandsAreDrawnAsSeparateBlades) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-940418");
   const FileRender f = render_realworld(dir, "Bugs_Bug940418_Bug940418.rib", "Bug940418.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -72,7 +67,7 @@ TEST(RealworldRibs, Bug940418ManyCubicStrandsAreDrawnAsSeparateBlades) {
 }
 
 TEST(RealworldRibs, BezierGrassIsGreenTaperingBlades) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-bezier");
   const FileRender f = render_realworld(dir, "content_ribs_features_curves_bezier.rib", "bezier.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -87,7 +82,7 @@ TEST(RealworldRibs, BezierGrassIsGreenTaperingBlades) {
 }
 
 TEST(RealworldRibs, DelayedReadArchiveBringsInItsSphere) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-delayed");
   const FileRender f = render_realworld(dir, "delayedproc.rib", "delayedproc.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -100,7 +95,7 @@ TEST(RealworldRibs, DelayedReadArchiveBringsInItsSphere) {
 }
 
 TEST(RealworldRibs, ArchiveAloneIsAnErrorOutsideTheWorld) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-archive");
   // delayed_archive.rib is the archive delayedproc.rib reads: a bare Sphere, meaningless alone.
   const RunResult r = render_realworld(dir, "delayed_archive.rib", /*image=*/"").run;
@@ -111,7 +106,7 @@ TEST(RealworldRibs, ArchiveAloneIsAnErrorOutsideTheWorld) {
 }
 
 TEST(RealworldRibs, VolumeBoxEdgesAreLinearCurves) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-volume");
   const FileRender f = render_realworld(dir, "tools_shadeops_sci_volumes_volume.rib", "volume.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -126,7 +121,7 @@ TEST(RealworldRibs, VolumeBoxEdgesAreLinearCurves) {
 }
 
 TEST(RealworldRibs, Bug1102598UnknownBasisIsAnErrorAndTheCurvesStillDrawOverTheWhitePatch) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-1102598");
   const FileRender f = render_realworld(dir, "Bugs_Bug1102598_Bug1102598.rib", "Bug1102598.tif");
   EXPECT_EQ(f.run.exit_code, 3) << "an unknown basis name is an error (the image is still written)";
@@ -150,7 +145,7 @@ TEST(RealworldRibs, Bug1102598UnknownBasisIsAnErrorAndTheCurvesStillDrawOverTheW
 }
 
 TEST(RealworldRibs, ShadowposCurvesAndSphereShadowTheGroundPatch) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-shadowpos");
   const FileRender f = render_realworld(dir, "Shadows_shadowpos_1.rib", "shadowpos_1.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -176,7 +171,7 @@ TEST(RealworldRibs, ShadowposCurvesAndSphereShadowTheGroundPatch) {
 }
 
 TEST(RealworldRibs, ShadtestSphereCastsAShadowOnTheGroundPatch) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-shadtest");
   const FileRender f = render_realworld(dir, "Shadows_shadtest.rib", "shadtest.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -204,7 +199,7 @@ TEST(RealworldRibs, ShadtestSphereCastsAShadowOnTheGroundPatch) {
 }
 
 TEST(RealworldRibs, Subdiv1IsOneSmoothLimitSurface) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-subdiv1");
   const FileRender f = render_realworld(dir, "Subdivision_subdiv1.rib", "subdiv1.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -234,7 +229,7 @@ TEST(RealworldRibs, Subdiv1IsOneSmoothLimitSurface) {
 }
 
 TEST(RealworldRibs, TmapTestShowsItsFivePatchesDiskAndPolygons) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-tmap");
   const FileRender f = render_realworld(dir, "Texturing_tmap_test.rib", "tmap_test.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -249,7 +244,7 @@ TEST(RealworldRibs, TmapTestShowsItsFivePatchesDiskAndPolygons) {
 }
 
 TEST(RealworldRibs, DeformationShowsEveryPrimitiveKind) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-deformation");
   const FileRender f = render_realworld(dir, "content_ribs_features_motionblur_deformation.rib", "deformation.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -266,7 +261,7 @@ TEST(RealworldRibs, DeformationShowsEveryPrimitiveKind) {
 }
 
 TEST(RealworldRibs, VaseAndTeapotPatchMeshesRenderInTheirLastFrame) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-vase");
   // With the stochastic hider at half its resolution: the distance hider takes about 30 times as
   // long on this scene's tessellated surfaces (README, Known limits), which would make this one

@@ -6,25 +6,20 @@
 
 #include "support/darc_command.h"
 #include "support/pixel_counts.h"
+#include "support/shared_ribs.h"
 
 namespace darc::test {
 namespace {
-
-fs::path shared_ribs() { return fs::path(DARC_SHARED_RIBS_DIR) / "aqsis"; }
-
-#define REQUIRE_SHARED_RIBS()           \
-  if (!fs::is_directory(shared_ribs())) \
-  GTEST_SKIP() << "shared RIBs not found at " << shared_ribs() << ": conformance skipped"
 
 // Renders a shared RIB in a scratch directory (outputs land there, named by Display) and reads
 // `image`, the one the test looks at.
 FileRender render_shared(const ScratchDir& dir, const std::string& file, const std::string& image,
                          const std::string& extra = "") {
-  return render_file(dir, shared_ribs() / file, extra, image);
+  return render_file(dir, shared_ribs("aqsis") / file, extra, image);
 }
 
 TEST(SharedRibs, BezierGrassShowsManyTaperingBlades) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("bezier");
   const FileRender f = render_shared(dir, "Curves_bezier.rib", "bezier.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -46,7 +41,7 @@ TEST(SharedRibs, BezierGrassShowsManyTaperingBlades) {
 }
 
 TEST(SharedRibs, CatmullRomCurveAndReferenceSquare) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("catmull");
   const FileRender f = render_shared(dir, "Curves_catmull-rom.rib", "catmull-rom.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -60,7 +55,7 @@ TEST(SharedRibs, CatmullRomCurveAndReferenceSquare) {
 }
 
 TEST(SharedRibs, LinearCurveSeenEndOnAndSquare) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("linear");
   const FileRender f = render_shared(dir, "Curves_linear.rib", "linear.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -70,7 +65,7 @@ TEST(SharedRibs, LinearCurveSeenEndOnAndSquare) {
 }
 
 TEST(SharedRibs, LinCurveTest1FallsBackFromUnknownShader) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("lincurve1");
   const FileRender f = render_shared(dir, "Curves_lincurve_test1.rib", "lincurve_test1.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -81,7 +76,7 @@ TEST(SharedRibs, LinCurveTest1FallsBackFromUnknownShader) {
 }
 
 TEST(SharedRibs, LinCurveTest2OneSidedCurveShowsLessThanTwoSided) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("lincurve2");
   const FileRender f = render_shared(dir, "Curves_lincurve_test2.rib", "lincurve_test2.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -99,7 +94,7 @@ TEST(SharedRibs, LinCurveTest2OneSidedCurveShowsLessThanTwoSided) {
 }
 
 TEST(SharedRibs, AnimWritesFiftyFramesWithAMovingSphere) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("anim");
   ASSERT_TRUE(rendered_cleanly(render_shared(dir, "Misc_anim.rib", "anim00.tif", "--res 80x60")));
   double cx_first = 0, cx_prev = -1;
@@ -128,7 +123,7 @@ TEST(SharedRibs, AnimWritesFiftyFramesWithAMovingSphere) {
 }
 
 TEST(SharedRibs, GeneralPolygonsHaveHoles) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("genpoly");
   const FileRender f = render_shared(dir, "Polygons_genpoly_test.rib", "genpoly_test.tif");
   ASSERT_TRUE(rendered_cleanly(f));
@@ -147,7 +142,7 @@ TEST(SharedRibs, GeneralPolygonsHaveHoles) {
 }
 
 TEST(SharedRibs, ReadArchiveBringsTheRedTriangle) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("readarchive");
   const FileRender f = render_shared(dir, "RIBProcessing_readarchive.rib", "readarchive.tif");
   ASSERT_TRUE(rendered_cleanly(f));
