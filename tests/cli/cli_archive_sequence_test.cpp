@@ -1,31 +1,31 @@
 // End-to-end: a camera move over a hair archive. The archive is parsed once and its curves and
 // BVH are reused, the images are bitwise those without the cache, and a frame rendered alone
 // (--frames) is bitwise the same frame of the whole run.
-#include "render/render_test_util.h"
-
 #include <nlohmann/json.hpp>
-
 #include <random>
+
+#include "support/cubic_strands.h"
+#include "support/darc_command.h"
+#include "support/image_files.h"
 
 namespace darc::test {
 namespace {
 
+// 300 random B-spline strands of 6 control points hanging from y = -1 upwards, each drifting
+// sideways at random as it rises.
 std::string hair_archive() {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-  std::string rib = "AttributeBegin\nColor [0.5 0.35 0.2]\nSurface \"hair\"\nBasis \"b-spline\" 1 \"b-spline\" 1\n"
-                    "Curves \"cubic\" [";
-  for (int i = 0; i < 300; ++i) rib += " 6";
-  rib += "] \"nonperiodic\" \"P\" [";
-  char point[64];
-  for (int i = 0; i < 300; ++i) {
-    const float x = u(rng), z = u(rng);
-    for (int v = 0; v < 6; ++v) {
-      std::snprintf(point, sizeof point, " %.3f %.3f %.3f", x + 0.05f * float(v) * u(rng), -1.0f + 0.4f * float(v), z);
-      rib += point;
+  float x = 0, z = 0;
+  const StrandPoint point = [&](int, int v) {
+    if (v == 0) {
+      x = u(rng);
+      z = u(rng);
     }
-  }
-  return rib + "] \"constantwidth\" [0.02]\nAttributeEnd\n";
+    return Vec3f{x + 0.05f * float(v) * u(rng), -1.0f + 0.4f * float(v), z};
+  };
+  return "AttributeBegin\nColor [0.5 0.35 0.2]\nSurface \"hair\"\nBasis \"b-spline\" 1 \"b-spline\" 1\n" +
+         cubic_strands(300, 6, point, 0.02f) + "AttributeEnd\n";
 }
 
 std::string camera_move(int frames) {

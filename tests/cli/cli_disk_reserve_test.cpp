@@ -1,6 +1,7 @@
 // End-to-end: an image write that would leave less than the disk reserve free is refused: an
 // error naming the file, exit 1, and no file (not even a temporary one) left behind.
-#include "render/render_test_util.h"
+#include "support/darc_command.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

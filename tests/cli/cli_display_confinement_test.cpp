@@ -2,7 +2,9 @@
 // given; an absolute name, a ".." out or a linked folder is a scene error at the Display, and
 // the frame is written to the name's last component in the working folder, nothing outside.
 // -o is the user's and never restricted; --trust-rib lifts the rule.
-#include "render/render_test_util.h"
+#include "support/darc_command.h"
+#include "support/image_files.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

@@ -3,10 +3,12 @@
 // records the errors in its image (darc:errors, darc:first_error), the run exits 3; printing is
 // capped; --skip-existing renders a frame that recorded errors again. "abort" and --strict stop
 // at the first error and write nothing for its frame; "ignore" prints nothing.
-#include "render/render_test_util.h"
-
 #include <chrono>
 #include <optional>
+
+#include "support/darc_command.h"
+#include "support/image_files.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

@@ -1,11 +1,12 @@
 // End-to-end: the darc command's exit codes and error reports (DESIGN.md "Command-line
 // contract": 0 ok, 1 render or I/O error, 2 usage error, 3 scene error), and that a scene error
 // skips its request while its frame is still written, recording the error, and the run exits 3.
-#include "render/render_test_util.h"
-
 #include <nlohmann/json.hpp>
-
 #include <regex>
+
+#include "support/darc_command.h"
+#include "support/image_files.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

@@ -1,9 +1,11 @@
 // End-to-end: where darc writes its frames and which frames it renders (-o and its '#' / %04d
 // patterns, --frames, --skip-existing), and where the RIB comes from (a file, '-' for standard
 // input, and --cat's output read back).
-#include "render/render_test_util.h"
-
 #include <chrono>
+
+#include "support/darc_command.h"
+#include "support/image_files.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

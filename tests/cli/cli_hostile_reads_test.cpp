@@ -4,13 +4,14 @@
 // there); a file that is not RIB is refused whole and nothing of it reaches standard error or the
 // image's metadata, and what messages quote of a RIB is bounded; a named pipe given on the
 // command line is read once, by the parser.
-#include "render/render_test_util.h"
-
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <zlib.h>
 
 #include <thread>
+
+#include "support/darc_command.h"
+#include "support/image_files.h"
 
 namespace darc::test {
 namespace {

@@ -2,11 +2,12 @@
 // request that crosses the limit and writes nothing, instead of being killed by the kernel's OOM
 // killer; --memory-limit sets the limit, and a real memory cgroup (what a Slurm job's --mem or a
 // container sets) is found on its own.
-#include "render/render_test_util.h"
-
 #include <csignal>
-#include <cstdio>
 #include <random>
+
+#include "support/cubic_strands.h"
+#include "support/darc_command.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {
@@ -17,24 +18,17 @@ constexpr int kExitSceneError = 3;
 // A frame of `strands` random hair strands (10 cubic Bézier segments each), 1000 per Curves
 // request, rendered at 32x24 to out.exr.
 std::string hair_frame(int strands) {
+  constexpr int kPerRequest = 1000;
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  Vec3f root;
+  const StrandPoint point = [&](int, int v) {
+    if (v == 0) root = Vec3f{u(rng), u(rng), u(rng)};
+    return Vec3f{root.x + 0.01f * float(v), root.y + 0.005f * float(v), root.z};
+  };
   std::string rib = "Display \"out.exr\" \"file\" \"rgba\"\nFormat 32 24 1\nPixelSamples 1 1\n"
                     "Projection \"perspective\" \"fov\" [40]\nTranslate 0 0 5\nWorldBegin\nSurface \"constant\"\n";
-  char point[64];
-  for (int first = 0; first < strands; first += 1000) {
-    rib += "Curves \"cubic\" [";
-    for (int i = 0; i < 1000; ++i) rib += " 31";
-    rib += "] \"nonperiodic\" \"P\" [";
-    for (int i = 0; i < 1000; ++i) {
-      const float x = u(rng), y = u(rng), z = u(rng);
-      for (int v = 0; v < 31; ++v) {
-        std::snprintf(point, sizeof point, " %.3f %.3f %.3f", x + 0.01f * float(v), y + 0.005f * float(v), z);
-        rib += point;
-      }
-    }
-    rib += "] \"constantwidth\" [0.005]\n";
-  }
+  for (int first = 0; first < strands; first += kPerRequest) rib += cubic_strands(kPerRequest, 31, point, 0.005f);
   return rib + "WorldEnd\n";
 }
 
@@ -142,7 +136,8 @@ TEST(CliMemoryLimit, CgroupLimitFailsTheFrameInsteadOfTheOomKiller) {
   write_file(dir / "hair.rib", hair_frame(60000));
   MemoryCgroup group("small", 96ull << 20);
   if (!group.usable()) GTEST_SKIP() << "no memory cgroup can be made here (needs root): " << group.why_not();
-  const std::string darc = "\"" + std::string(DARC_BINARY) + "\" --quiet hair.rib";
+  // Appended from the left: GCC 12 wrongly warns (-Wrestrict, its bug 105329) on "literal" + string.
+  const std::string darc = std::string("\"").append(DARC_BINARY).append("\" --quiet hair.rib");
   const std::string cmd = "cd '" + dir.path().string() + "' && " + group.inside(darc) + " 2> err.txt";
   const int status = std::system(cmd.c_str());
   const std::string err = read_text_file(dir / "err.txt");

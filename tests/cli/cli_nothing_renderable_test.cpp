@@ -1,6 +1,6 @@
 // End-to-end: a frame whose every primitive darc skips still renders (an empty image, exit code
 // 0: nothing in it is an error), but darc says so on stderr instead of writing black silently.
-#include "render/render_test_util.h"
+#include "support/darc_command.h"
 
 namespace darc::test {
 namespace {

@@ -1,10 +1,12 @@
 // End-to-end: what darc writes (the format follows the extension; the Display mode chooses the
 // channels) and that no pixel is ever NaN or infinite, even for degenerate input.
-#include "render/render_test_util.h"
-
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+
+#include "support/darc_command.h"
+#include "support/image_files.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

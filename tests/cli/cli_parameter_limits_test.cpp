@@ -2,9 +2,11 @@
 // reflection depth cap that keeps two facing mirrors from overflowing the stack, a crop window
 // without a pixel (an error at the request, not an I/O failure), and extreme frame numbers in
 // file names and frame lists.
-#include "render/render_test_util.h"
-
 #include <nlohmann/json.hpp>
+
+#include "support/darc_command.h"
+#include "support/image_files.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

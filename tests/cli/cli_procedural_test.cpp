@@ -3,10 +3,11 @@
 // (--procedural-path, DARC_PROCEDURAL_PATH), whatever its own search path says, unless the user
 // trusts it (--trust-rib); --procedural-timeout bounds a request, and a generator's standard
 // error reaches darc's, marked.
-#include "render/render_test_util.h"
-
 #include <dlfcn.h>
 #include <zlib.h>
+
+#include "support/darc_command.h"
+#include "support/image_files.h"
 
 namespace darc::test {
 namespace {

@@ -1,12 +1,14 @@
 // End-to-end: the options that change how a frame is rendered (--res, --pixel-samples, --hider,
 // --seed, --threads), the --stats JSON, and the progress log.
-#include "render/render_test_util.h"
-
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
+
+#include "support/darc_command.h"
+#include "support/image_compare.h"
+#include "support/image_files.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {
@@ -16,12 +18,12 @@ constexpr int kMaxProgressLinesPerFrame = 11;
 // A render of the tiny scene takes milliseconds; anything near this means a broken clock.
 constexpr double kSaneSecondsBound = 60.0;
 
+// `rib_name` in `dir` rendered with `args` to `out`, read back (no pixels when that fails, which
+// fails the test).
 Pixels render(const ScratchDir& dir, const std::string& rib_name, const std::string& args, const std::string& out) {
-  RunResult r = run_darc(dir.path(), args + " -o " + out + " " + rib_name);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  Pixels p;
-  EXPECT_TRUE(read_image(dir / out, p)) << out;
-  return p;
+  const FileRender f = render_file(dir, rib_name, args + " -o " + out, out);
+  EXPECT_TRUE(rendered_cleanly(f)) << out;
+  return f.image.value_or(Pixels{});
 }
 
 TEST(CliRenderOptions, ResOverridesFormat) {
@@ -108,13 +110,6 @@ TEST(CliRenderOptions, PixelSamplesOverridesPixelSamples) {
   EXPECT_EQ(f["counters"]["primary_rays"], 32 * 24 * 16) << "the stochastic hider traces N x N rays per pixel";
 }
 
-// Mean absolute difference over every channel.
-double mean_abs_difference(const Pixels& a, const Pixels& b) {
-  double sum = 0;
-  for (size_t i = 0; i < a.v.size(); ++i) sum += std::abs(a.v[i] - b.v[i]);
-  return sum / double(a.v.size());
-}
-
 TEST(CliRenderOptions, BothHidersRenderTheSameScene) {
   ScratchDir dir("hiders");
   write_file(dir / "scene.rib", tiny_frame_rib(1, "out.exr"));
@@ -124,7 +119,7 @@ TEST(CliRenderOptions, BothHidersRenderTheSameScene) {
   // The sphere's centre is solid blue in both; they differ only along edges.
   EXPECT_NEAR(distance.at(16, 12, 2), 0.9f, 1e-3f);
   EXPECT_NEAR(stochastic.at(16, 12, 2), 0.9f, 1e-3f);
-  EXPECT_LT(mean_abs_difference(distance, stochastic), 0.05);
+  EXPECT_LT(compare(distance, stochastic).mean_abs, 0.05);
 }
 
 TEST(CliRenderOptions, SeedChangesStochasticSamplesAndNotTheDistanceHider) {
@@ -133,7 +128,7 @@ TEST(CliRenderOptions, SeedChangesStochasticSamplesAndNotTheDistanceHider) {
   Pixels s1 = render(dir, "scene.rib", "--hider stochastic --pixel-samples 2 --seed 1", "s1.exr");
   Pixels s2 = render(dir, "scene.rib", "--hider stochastic --pixel-samples 2 --seed 2", "s2.exr");
   EXPECT_FALSE(s1.identical_to(s2)) << "jittered samples depend on the seed";
-  EXPECT_LT(mean_abs_difference(s1, s2), 0.05) << "but only edge pixels change";
+  EXPECT_LT(compare(s1, s2).mean_abs, 0.05) << "but only edge pixels change";
   // The distance hider at 1x1 traces the pixel centre: no randomness at all.
   Pixels d1 = render(dir, "scene.rib", "--hider distance --seed 1", "d1.exr");
   Pixels d2 = render(dir, "scene.rib", "--hider distance --seed 2", "d2.exr");

@@ -2,7 +2,8 @@
 // asked for and says darc's own was used.
 #include <nlohmann/json.hpp>
 
-#include "render/render_test_util.h"
+#include "support/darc_command.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

@@ -1,6 +1,7 @@
 // End-to-end: progress in a sequence says which frame of how many is rendering and estimates
 // the whole run; frames skipped because their image exists leave the count.
-#include "render/render_test_util.h"
+#include "support/darc_command.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

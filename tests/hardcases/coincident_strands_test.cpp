@@ -7,8 +7,9 @@
 #include <cstdio>
 #include <string>
 
-#include "hardcases/render_rib.h"
-#include "integrator/render_frame.h"
+#include "support/hider_reference.h"
+#include "support/render.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

@@ -1,13 +1,16 @@
 // Hard case 8 of curve-ray-tracing.md §6: strands whose coverages are correlated. Scalar
 // coverage composites two abutting 50 % strands to 75 % (not 100 %) and two coincident ones to
 // 75 % (not 50 %); coverage masks composite them where they lie in the footprint.
-#include "hardcases/render_rib.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 #include <sstream>
+
+#include "support/hider_reference.h"
+#include "support/pixel_measures.h"
+#include "support/render.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

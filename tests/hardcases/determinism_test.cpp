@@ -1,14 +1,13 @@
 // The same scene rendered with one and with two threads gives bitwise identical pixels, for
 // both hiders (DESIGN.md: tiles share no mutable state and are merged in tile order).
-#include "hardcases/render_rib.h"
-
 #include <gtest/gtest.h>
 
 #include <random>
 #include <sstream>
 #include <string>
 
-#include "integrator/render_frame.h"
+#include "support/render.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 

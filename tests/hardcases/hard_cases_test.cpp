@@ -1,8 +1,6 @@
 // The hard cases of curve-ray-tracing.md §6 for the distance-aware hider, each on a tiny scene
 // rendered by both hiders: no NaN, alpha in [0, 1], and agreement with the stochastic 64x64
 // reference within a tolerance stated (and explained) per case.
-#include "hardcases/render_rib.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +10,10 @@
 #include <sstream>
 #include <string>
 
-#include "integrator/render_frame.h"
+#include "support/hider_reference.h"
+#include "support/pixel_measures.h"
+#include "support/render.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 

@@ -10,11 +10,19 @@
 #include <sstream>
 #include <string>
 
-#include "hardcases/render_rib.h"
+#include "support/hider_reference.h"
+#include "support/image_compare.h"
+#include "support/pixel_measures.h"
+#include "support/render.h"
+#include "support/test_frames.h"
 
 namespace darc {
 namespace {
 
+using test::all_finite;
+using test::channel_at;
+using test::compare;
+using test::kRgb;
 using test::orthographic_frame;
 using test::perspective_frame;
 using test::render_rib;
@@ -22,28 +30,6 @@ using test::RenderedFrame;
 using test::single_thread;
 
 constexpr HiderKind kHiders[] = {HiderKind::Distance, HiderKind::Stochastic};
-
-float channel(const Image& image, int x, int y, const char* name) { return image.at(x, y, image.channel_index(name)); }
-
-bool all_finite(const Image& image) {
-  for (float v : image.pixels)
-    if (!std::isfinite(v)) return false;
-  return true;
-}
-
-// RMS over R, G, B of every pixel.
-double rgb_rmse(const Image& a, const Image& b) {
-  double sum = 0;
-  int n = 0;
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x)
-      for (const char* c : {"R", "G", "B"}) {
-        double d = channel(a, x, y, c) - channel(b, x, y, c);
-        sum += d * d;
-        ++n;
-      }
-  return std::sqrt(sum / n);
-}
 
 bool bitwise_equal(const Image& a, const Image& b) { return a.pixels == b.pixels && a.channel_names == b.channel_names; }
 
@@ -99,7 +85,7 @@ TEST(SecondaryRays, SphereShadowFromAPointLightLandsOnTheAnalyticBoundary) {
         if (!s && hider == HiderKind::Stochastic)
           for (float dx : {-0.5f, 0.5f})
             for (float dy : {-0.5f, 0.5f}) spread = std::max(spread, std::abs(lit_value(x + dx, y + dy) - expected));
-        EXPECT_NEAR(channel(f.image, i, j, "R"), expected, 2e-3f * expected + spread)
+        EXPECT_NEAR(channel_at(f.image, i, j, "R"), expected, 2e-3f * expected + spread)
             << to_string(hider) << " pixel " << i << "," << j << (s ? " (shadow)" : " (lit)");
         (s ? shadowed : lit) += 1;
       }
@@ -129,7 +115,7 @@ TEST(SecondaryRays, AStrandLyingOnAPlaneCastsAContactShadow) {
     const int row = h / 2;
     for (int i = 0; i < w; ++i) {
       const float x0 = world_x(i, w) - 0.5f, x1 = x0 + 1;
-      const float value = channel(f.image, i, row, "R");
+      const float value = channel_at(f.image, i, row, "R");
       if (x0 >= 2 && x1 <= 4.8f) {
         EXPECT_NEAR(value, ambient, 1e-3f) << to_string(hider) << ": the contact shadow at x = " << x0;
       } else if (x0 >= 6 || x1 <= -2) {
@@ -218,7 +204,7 @@ TEST(SecondaryRays, AFlatMirrorShowsTheMirroredScene) {
     ASSERT_TRUE(all_finite(a.image));
     EXPECT_GT(a.stats.counters.traced_by_kind[int(SecondaryKind::Reflection)], 0u);
     // Mirror images: x flips in neither (the mirror is perpendicular to the view axis).
-    EXPECT_LT(rgb_rmse(a.image, b.image), 2e-3) << to_string(hider);
+    EXPECT_LT(compare(a.image, b.image, kRgb).rmse, 2e-3) << to_string(hider);
   }
 }
 
@@ -244,10 +230,10 @@ TEST(SecondaryRays, GlassWithEtaOneIsNoGlass) {
         const float x = world_x(i, w), y = world_y(j, h);
         if (x * x + y * y > (radius - 1.5f) * (radius - 1.5f)) continue;
         for (const char* c : {"R", "G", "B"})
-          inside_max = std::max(inside_max, std::abs(channel(a.image, i, j, c) - channel(b.image, i, j, c)));
+          inside_max = std::max(inside_max, std::abs(channel_at(a.image, i, j, c) - channel_at(b.image, i, j, c)));
       }
     EXPECT_LT(inside_max, 1e-4f) << to_string(hider);
-    EXPECT_LT(rgb_rmse(a.image, b.image), 5e-3) << to_string(hider);
+    EXPECT_LT(compare(a.image, b.image, kRgb).rmse, 5e-3) << to_string(hider);
   }
 }
 

@@ -8,7 +8,8 @@
 #include <sstream>
 #include <string>
 
-#include "hardcases/render_rib.h"
+#include "support/hider_reference.h"
+#include "support/test_frames.h"
 
 namespace darc::test {
 namespace {

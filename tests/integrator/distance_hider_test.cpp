@@ -8,32 +8,18 @@
 #include <sstream>
 #include <string>
 
-#include "integrator/built_scene.h"
-#include "integrator/render_frame.h"
-#include "parser/rib_parser.h"
+#include "support/render.h"
+#include "support/scenes_from_rib.h"
+#include "support/test_frames.h"
 
 namespace darc {
 namespace {
 
 using test::build_scene;
-
-// An orthographic W x H image, one world unit per pixel, one sample per pixel, box filter.
-std::string orthographic_frame(int width, int height, const std::string& world) {
-  std::ostringstream s;
-  s << "Format " << width << " " << height << " 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\n"
-    << "Projection \"orthographic\"\nScreenWindow " << -0.5 * width << " " << 0.5 * width << " " << -0.5 * height << " "
-    << 0.5 * height << "\nWorldBegin\nSurface \"constant\"\n"
-    << world << "WorldEnd\n";
-  return s.str();
-}
-
-Image render_distance(const Scene& scene, FrameStats& stats) {
-  Diagnostics diag([](const Diagnostic&) {});
-  RenderOptions options;
-  options.hider = HiderKind::Distance;
-  options.threads = 1;
-  return render_frame(scene, options, diag, stats);
-}
+using test::orthographic_frame;
+using test::render;
+using test::RenderedFrame;
+using test::single_thread;
 
 constexpr int kWidth = 16, kHeight = 4;
 constexpr float kStrandWidth = 0.3f;
@@ -59,20 +45,20 @@ std::string strand_with_joints_at_pixel_centres(bool cubic) {
 TEST(DistanceHider, OneFragmentPerStrandAcrossJointsAndCells) {
   for (bool cubic : {false, true}) {
     SCOPED_TRACE(cubic ? "cubic" : "linear");
-    Scene scene = build_scene(orthographic_frame(kWidth, kHeight, strand_with_joints_at_pixel_centres(cubic)));
+    Scene scene = build_scene(orthographic_frame(kWidth, kHeight, 1, strand_with_joints_at_pixel_centres(cubic)));
     ASSERT_GE(scene.curves.size(), size_t(kWidth));
     if (scene.accel.kind() == AcceleratorKind::Grid) {
       EXPECT_GE(scene.accel.grid().resolution()[0], kWidth / 2);  // the strand spans many cells
     }
-    FrameStats stats;
-    Image image = render_distance(scene, stats);
+    const RenderedFrame frame = render(scene, single_thread(HiderKind::Distance));
+    const Image& image = frame.image;
     int alpha = image.channel_index("A");
     for (int x = 0; x < kWidth; ++x) {
       // The band [-0.15, 0.15] inside the unit pixel: coverage 0.3, not 1 - 0.7^2 = 0.51.
       EXPECT_NEAR(image.at(x, 1, alpha), kStrandWidth, 1e-4f) << "pixel " << x;
       for (int y : {0, 2, 3}) EXPECT_EQ(image.at(x, y, alpha), 0.0f) << x << "," << y;
     }
-    EXPECT_EQ(stats.counters.fragments, uint64_t(kWidth));  // one per ray that sees the strand
+    EXPECT_EQ(frame.stats.counters.fragments, uint64_t(kWidth));  // one per ray that sees the strand
   }
 }
 
@@ -84,16 +70,15 @@ TEST(DistanceHider, StrandOverAndUnderAnOpaqueSurface) {
       << kRowOneCentreY << " " << z << "] \"constantwidth\" [" << kStrandWidth << "]\n";
     return s.str();
   };
-  FrameStats stats;
-  Scene front = build_scene(orthographic_frame(kWidth, kHeight, quad_at_10 + strand_at(5)));
-  Image image = render_distance(front, stats);
+  Scene front = build_scene(orthographic_frame(kWidth, kHeight, 1, quad_at_10 + strand_at(5)));
+  Image image = render(front, single_thread(HiderKind::Distance)).image;
   // Premultiplied red over blue: (0.3, 0, 0.7), alpha 1.
   EXPECT_NEAR(image.at(3, 1, 0), kStrandWidth, 1e-4f);
   EXPECT_NEAR(image.at(3, 1, 2), 1.0f - kStrandWidth, 1e-4f);
   EXPECT_NEAR(image.at(3, 1, image.channel_index("A")), 1.0f, 1e-5f);
   EXPECT_NEAR(image.at(3, 0, 2), 1.0f, 1e-5f);
-  Scene behind = build_scene(orthographic_frame(kWidth, kHeight, quad_at_10 + strand_at(15)));
-  image = render_distance(behind, stats);
+  Scene behind = build_scene(orthographic_frame(kWidth, kHeight, 1, quad_at_10 + strand_at(15)));
+  image = render(behind, single_thread(HiderKind::Distance)).image;
   EXPECT_EQ(image.at(3, 1, 0), 0.0f);
   EXPECT_NEAR(image.at(3, 1, 2), 1.0f, 1e-5f);
 }

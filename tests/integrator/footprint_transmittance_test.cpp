@@ -10,8 +10,8 @@
 #include <sstream>
 #include <string>
 
-#include "integrator/built_scene.h"
 #include "shading/scene_shading.h"
+#include "support/scenes_from_rib.h"
 
 namespace darc {
 namespace {

@@ -10,13 +10,19 @@
 #include <cmath>
 #include <string>
 
-#include "integrator/built_scene.h"
-#include "integrator/render_frame.h"
+#include "support/image_compare.h"
+#include "support/pixel_measures.h"
+#include "support/render.h"
 
 namespace darc {
 namespace {
 
-using test::build_scene;
+using test::channel_sum;
+using test::compare;
+using test::ImageDifference;
+using test::kAlpha;
+using test::kRgba;
+using test::render_image;
 
 constexpr const char* kHeader = R"RIB(Format 64 48 1
 PixelSamples 3 3
@@ -29,44 +35,6 @@ LightSource "ambientlight" 2 "intensity" 0.15
 Surface "matte"
 )RIB";
 
-Image render(const std::string& rib, HiderKind hider, int threads = 1) {
-  const Scene scene = build_scene(rib);
-  Diagnostics diag([](const Diagnostic&) {});
-  RenderOptions options;
-  options.hider = hider;
-  options.threads = threads;
-  FrameStats stats;
-  return render_frame(scene, options, diag, stats);
-}
-
-struct Difference {
-  double rmse = 0, max = 0;
-};
-
-// Over one channel, or over all of them (channel -1).
-Difference compare(const Image& a, const Image& b, int channel = -1) {
-  Difference d;
-  EXPECT_EQ(a.pixels.size(), b.pixels.size());
-  size_t n = 0;
-  for (size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
-    if (channel >= 0 && int(i % size_t(a.channels())) != channel) continue;
-    const double e = std::abs(double(a.pixels[i]) - double(b.pixels[i]));
-    d.rmse += e * e;
-    d.max = std::max(d.max, e);
-    ++n;
-  }
-  d.rmse = std::sqrt(d.rmse / double(std::max<size_t>(1, n)));
-  return d;
-}
-
-double covered(const Image& image) {
-  const int alpha = image.channel_index("A");
-  double sum = 0;
-  for (size_t i = size_t(alpha); i < image.pixels.size(); i += size_t(image.channels())) sum += image.pixels[i];
-  return sum;
-}
-
-const char* name(HiderKind hider) { return hider == HiderKind::Distance ? "distance" : "stochastic"; }
 
 TEST(PatchSurface, BilinearPatchGroundRendersAsItsPolygon) {
   // The patch's corners in RI patch order (0,0), (1,0), (0,1), (1,1) are the polygon's 0, 1, 3, 2.
@@ -77,10 +45,10 @@ TEST(PatchSurface, BilinearPatchGroundRendersAsItsPolygon) {
   const std::string patch =
       std::string(kHeader) + sphere + "Patch \"bilinear\" \"P\" [-2 0 -2  2 0 -2  -2 0 2  2 0 2]\nWorldEnd\n";
   for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
-    SCOPED_TRACE(name(hider));
-    const Image a = render(polygon, hider), b = render(patch, hider);
-    ASSERT_GT(covered(a), 0.3 * 64 * 48) << "the ground fills much of the frame";
-    const Difference d = compare(a, b);
+    SCOPED_TRACE(to_string(hider));
+    const Image a = render_image(polygon, hider), b = render_image(patch, hider);
+    ASSERT_GT(channel_sum(a, kAlpha), 0.3 * 64 * 48) << "the ground fills much of the frame";
+    const ImageDifference d = compare(a, b);
     EXPECT_LT(d.rmse, 2e-3);  // one plane: only the diagonal may differ
     // The distance hider's coverage of the diagonal's two sides sums to slightly under 1 at one
     // pixel (0.034 here); the stochastic hider's exact hits differ only by rounding.
@@ -108,24 +76,18 @@ TEST(PatchSurface, NurbsSphereHasTheSpheresSilhouetteAndShading) {
   const std::string exact = std::string(kHeader) + place + "Sphere 1 -1 1 360\nWorldEnd\n";
   const std::string nurbs = std::string(kHeader) + place + nurbs_sphere() + "WorldEnd\n";
   for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
-    SCOPED_TRACE(name(hider));
-    const Image a = render(exact, hider), b = render(nurbs, hider);
-    ASSERT_GT(covered(a), 200) << "the sphere is in view";
-    const Difference alpha = compare(a, b, a.channel_index("A"));
+    SCOPED_TRACE(to_string(hider));
+    const Image a = render_image(exact, hider), b = render_image(nurbs, hider);
+    ASSERT_GT(channel_sum(a, kAlpha), 200) << "the sphere is in view";
     // Colour and alpha: a pixel that only a sliver of one of the two silhouettes reaches has a
     // depth in one image and none (the far plane) in the other; analytic coverage of the NURBS
     // triangles finds slivers the exact sphere's sub-rays miss.
-    Difference all;
-    for (const char* c : {"R", "G", "B", "A"}) {
-      const Difference d = compare(a, b, a.channel_index(c));
-      all.rmse = std::max(all.rmse, d.rmse);
-      all.max = std::max(all.max, d.max);
-    }
+    const ImageDifference alpha = compare(a, b, kAlpha), all = compare(a, b, kRgba);
     // Silhouette: the triangles are within 6e-4 of the radius (about 0.01 pixel here), so a sample
     // in that band is rare, and one sample weighs about 1/9 of a pixel.
     EXPECT_LT(alpha.rmse, 5e-3);
     EXPECT_LT(alpha.max, 0.15);
-    EXPECT_NEAR(covered(b), covered(a), 2e-3 * covered(a));
+    EXPECT_NEAR(channel_sum(b, kAlpha), channel_sum(a, kAlpha), 2e-3 * channel_sum(a, kAlpha));
     // Shading: interpolated normals within 4 degrees of each other, so within 2 of the exact one.
     EXPECT_LT(all.rmse, 1e-2);
   }
@@ -162,14 +124,15 @@ LightSource "ambientlight" 1 "intensity" 1
 Surface "constant"
 )RIB";
   for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
-    SCOPED_TRACE(name(hider));
-    const Image a = render(header + polygon + "WorldEnd\n", hider), b = render(header + patch + "WorldEnd\n", hider);
+    SCOPED_TRACE(to_string(hider));
+    const Image a = render_image(header + polygon + "WorldEnd\n", hider),
+                b = render_image(header + patch + "WorldEnd\n", hider);
     // A quarter of pi r^2 over the 2 x 2 screen window's 64 x 64 pixels.
-    EXPECT_NEAR(covered(a), M_PI * kRadius * kRadius / 4 / 4 * 64 * 64, 2);
-    const Difference alpha = compare(a, b, a.channel_index("A"));
+    EXPECT_NEAR(channel_sum(a, kAlpha), M_PI * kRadius * kRadius / 4 / 4 * 64 * 64, 2);
+    const ImageDifference alpha = compare(a, b, kAlpha);
     EXPECT_LT(alpha.rmse, 3e-3);
     EXPECT_LT(alpha.max, 0.15);  // a sample at most (about 1/9 of a pixel) on the other side
-    EXPECT_NEAR(covered(b), covered(a), 2);
+    EXPECT_NEAR(channel_sum(b, kAlpha), channel_sum(a, kAlpha), 2);
   }
 }
 
@@ -181,9 +144,9 @@ TEST(PatchSurface, SameImageOnOneAndTwoThreads) {
       "-2 0 0.7 -1 0.4 0.7 0 0 0.7 1 0.3 0.7 2 0 0.7  -2 0.3 2 -1 0 2 0 0.2 2 1 0 2 2 0.4 2]\n" +
       "Translate 0 0.8 0 Scale 0.6 0.6 0.6\n" + nurbs_sphere() + "WorldEnd\n";
   for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
-    SCOPED_TRACE(name(hider));
-    const Image one = render(rib, hider, 1), two = render(rib, hider, 2);
-    ASSERT_GT(covered(one), 100);
+    SCOPED_TRACE(to_string(hider));
+    const Image one = render_image(rib, hider, 1), two = render_image(rib, hider, 2);
+    ASSERT_GT(channel_sum(one, kAlpha), 100);
     EXPECT_EQ(one.pixels, two.pixels);
   }
 }

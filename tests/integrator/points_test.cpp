@@ -10,13 +10,20 @@
 #include <numbers>
 #include <string>
 
-#include "integrator/built_scene.h"
-#include "integrator/render_frame.h"
+#include "support/image_compare.h"
+#include "support/pixel_measures.h"
+#include "support/render.h"
+#include "support/scenes_from_rib.h"
 
 namespace darc {
 namespace {
 
 using test::build_scene;
+using test::channel_sum;
+using test::compare;
+using test::ImageDifference;
+using test::kAlpha;
+using test::render_image;
 
 constexpr double kPi = std::numbers::pi;
 // The image: 64 x 64 pixels over the world square [-1, 1]^2 seen orthographically, so one pixel
@@ -38,42 +45,10 @@ WorldEnd
                      kSide, world);
 }
 
-Image render(const Scene& scene, HiderKind hider, int threads = 1) {
-  Diagnostics diag([](const Diagnostic&) {});
-  RenderOptions options;
-  options.hider = hider;
-  options.threads = threads;
-  FrameStats stats;
-  return render_frame(scene, options, diag, stats);
-}
-
 // The stochastic hider's reference: n x n exact samples per pixel.
 Image render_reference(Scene scene, int n) {
   scene.output.pixel_samples[0] = scene.output.pixel_samples[1] = n;
-  return render(scene, HiderKind::Stochastic);
-}
-
-double alpha_sum(const Image& image) {
-  double sum = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) sum += image.at(x, y, 3);
-  return sum;
-}
-
-struct Difference {
-  double rmse = 0, max = 0;
-};
-
-Difference alpha_difference(const Image& a, const Image& b) {
-  Difference d;
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x) {
-      const double e = std::abs(double(a.at(x, y, 3)) - double(b.at(x, y, 3)));
-      d.rmse += e * e;
-      d.max = std::max(d.max, e);
-    }
-  d.rmse = std::sqrt(d.rmse / double(a.width * a.height));
-  return d;
+  return render_image(scene, HiderKind::Stochastic);
 }
 
 // A point of radius r pixels (diameter 2r) at (x, y) in world units, white and matte.
@@ -87,16 +62,16 @@ TEST(Points, CoverageSumsToTheDiscsAreaAndMatchesTheExactSamples) {
                                             "\n" + point(0.5, 0.5, 2.6)));
   ASSERT_EQ(scene.points.size(), 3u);
   const double area = kPi * (0.3 * 0.3 + 0.07 * 0.07 + 2.6 * 2.6);  // pixels
-  const Image distance = render(scene, HiderKind::Distance);
+  const Image distance = render_image(scene, HiderKind::Distance);
   // The coverages of footprints tiling the image add up to the discs' area (exactly for the
   // square footprint; float rounding of the coverages aside).
-  EXPECT_NEAR(alpha_sum(distance), area, 1e-3 * area);
+  EXPECT_NEAR(channel_sum(distance, kAlpha), area, 1e-3 * area);
   const Image reference = render_reference(scene, 32);
-  EXPECT_NEAR(alpha_sum(reference), area, 0.02 * area) << "1024 exact samples per pixel";
-  const Difference d = alpha_difference(distance, reference);
+  EXPECT_NEAR(channel_sum(reference, kAlpha), area, 0.02 * area) << "1024 exact samples per pixel";
+  const ImageDifference d = compare(distance, reference, kAlpha);
   RecordProperty("alpha_rmse", std::to_string(d.rmse));
   RecordProperty("alpha_max", std::to_string(d.max));
-  RecordProperty("area_error", std::to_string(alpha_sum(distance) / area - 1));
+  RecordProperty("area_error", std::to_string(channel_sum(distance, kAlpha) / area - 1));
   // Exact per pixel too (the disc's area in the pixel square): what is left is the reference's
   // sampling noise (measured: RMSE 1.4e-4, max 3.6e-3).
   EXPECT_LT(d.rmse, 2e-3) << "RMSE " << d.rmse << ", max " << d.max;
@@ -115,15 +90,15 @@ TEST(Points, ARowOfOverlappingPointsCoversItsUnion) {
   const Scene scene = build_scene(
       scene_rib("Surface \"constant\"\nPoints \"P\" [" + P + "] \"constantwidth\" " + std::to_string(2 * r * kPixel)));
   const double union_area = (n - 1) * spacing * 2 * r + kPi * r * r, disc_sum = n * kPi * r * r;
-  const Image distance = render(scene, HiderKind::Distance);
+  const Image distance = render_image(scene, HiderKind::Distance);
   const Image reference = render_reference(scene, 32);
-  EXPECT_NEAR(alpha_sum(reference), union_area, 0.03 * union_area);
+  EXPECT_NEAR(channel_sum(reference, kAlpha), union_area, 0.03 * union_area);
   // Measured 2.8 % over: the masks place each disc's points to 1/8 pixel.
-  EXPECT_NEAR(alpha_sum(distance), union_area, 0.06 * union_area) << "the sum of the discs is " << disc_sum;
-  const Difference d = alpha_difference(distance, reference);
+  EXPECT_NEAR(channel_sum(distance, kAlpha), union_area, 0.06 * union_area) << "the sum of the discs is " << disc_sum;
+  const ImageDifference d = compare(distance, reference, kAlpha);
   RecordProperty("alpha_rmse", std::to_string(d.rmse));
   RecordProperty("alpha_max", std::to_string(d.max));
-  RecordProperty("union_error", std::to_string(alpha_sum(distance) / union_area - 1));
+  RecordProperty("union_error", std::to_string(channel_sum(distance, kAlpha) / union_area - 1));
   EXPECT_LT(d.max, 0.1) << "RMSE " << d.rmse << ", max " << d.max;
   // The silhouette: the band (raster y 31.38 to 31.88, x 28.75 to 35.15) lies in pixel row 31,
   // columns 28 to 35; the footprints are the pixels, so nothing else is covered.
@@ -153,7 +128,7 @@ Points "P" [-0.4 0 {}] "constantwidth" {})",
     SCOPED_TRACE(hider == HiderKind::Distance ? "distance" : "stochastic");
     Scene s = scene;
     if (hider == HiderKind::Stochastic) s.output.pixel_samples[0] = s.output.pixel_samples[1] = 4;
-    const Image image = render(s, hider);
+    const Image image = render_image(s, hider);
     // Lit plane: the brightness where nothing is in the way (far right of the image).
     const float lit = image.at(kSide - 4, kSide / 2, 0);
     ASSERT_GT(lit, 0.1f);
@@ -196,8 +171,8 @@ TEST(Points, SameImageOnOneAndTwoThreads) {
                 "Surface \"matte\"\nPoints \"P\" [" +
                 P + "] \"width\" [" + widths + "]"));
   for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
-    const Image one = render(scene, hider, 1), two = render(scene, hider, 2);
-    EXPECT_GT(alpha_sum(one), 10.0);
+    const Image one = render_image(scene, hider, 1), two = render_image(scene, hider, 2);
+    EXPECT_GT(channel_sum(one, kAlpha), 10.0);
     EXPECT_EQ(one.pixels, two.pixels);
   }
 }

@@ -6,13 +6,14 @@
 #include <sstream>
 #include <string>
 
-#include "integrator/built_scene.h"
-#include "integrator/render_frame.h"
+#include "support/render.h"
+#include "support/scenes_from_rib.h"
 
 namespace darc {
 namespace {
 
 using test::build_scene;
+using test::render_image;
 
 constexpr int kSize = 96;  // pixels across the image, which spans [-1, 1] in x and y
 constexpr float kPixel = 2.0f / kSize;
@@ -39,15 +40,6 @@ std::string cube_scene() {
   return s.str();
 }
 
-Image render(const Scene& scene, HiderKind hider, int threads) {
-  Diagnostics diag([](const Diagnostic&) {});
-  RenderOptions options;
-  options.hider = hider;
-  options.threads = threads;
-  FrameStats stats;
-  return render_frame(scene, options, diag, stats);
-}
-
 // The pixel centre's distance from the image centre, in world units.
 float radius_of_pixel(int x, int y) {
   float wx = -1 + (x + 0.5f) * kPixel, wy = 1 - (y + 0.5f) * kPixel;
@@ -58,7 +50,7 @@ TEST(SubdivisionRender, CubeOutlineLiesBetweenItsLimitFaceCentresAndCorners) {
   Scene scene = build_scene(cube_scene());
   for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
     SCOPED_TRACE(to_string(hider));
-    Image image = render(scene, hider, 1);
+    Image image = render_image(scene, hider, 1);
     int alpha = image.channel_index("A");
     int covered = 0;
     for (int y = 0; y < kSize; ++y) {
@@ -87,7 +79,7 @@ TEST(SubdivisionRender, CubeShadingIsSmooth) {
   Scene scene = build_scene(cube_scene());
   for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
     SCOPED_TRACE(to_string(hider));
-    Image image = render(scene, hider, 1);
+    Image image = render_image(scene, hider, 1);
     int red = image.channel_index("R");
     int compared = 0;
     float largest_step = 0, largest_kink = 0;
@@ -111,7 +103,7 @@ TEST(SubdivisionRender, ThreadCountDoesNotChangeTheImage) {
   Scene scene = build_scene(cube_scene());
   for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
     SCOPED_TRACE(to_string(hider));
-    EXPECT_EQ(render(scene, hider, 1).pixels, render(scene, hider, 2).pixels);
+    EXPECT_EQ(render_image(scene, hider, 1).pixels, render_image(scene, hider, 2).pixels);
   }
 }
 

@@ -7,13 +7,20 @@
 #include <cmath>
 #include <string>
 
-#include "integrator/built_scene.h"
-#include "integrator/render_frame.h"
+#include "support/image_compare.h"
+#include "support/pixel_measures.h"
+#include "support/render.h"
+#include "support/scenes_from_rib.h"
 
 namespace darc {
 namespace {
 
 using test::build_scene;
+using test::channel_mean;
+using test::compare;
+using test::ImageDifference;
+using test::kRgba;
+using test::render_image;
 
 constexpr const char* kQuadScene = R"RIB(Format 48 36 1
 PixelSamples 2 2
@@ -69,36 +76,8 @@ Scene as_fine_triangles(Scene scene, int n) {
   return scene;
 }
 
-Image render(const Scene& scene, HiderKind hider, int threads) {
-  Diagnostics diag([](const Diagnostic&) {});
-  RenderOptions options;
-  options.hider = hider;
-  options.threads = threads;
-  FrameStats stats;
-  return render_frame(scene, options, diag, stats);
-}
-
-struct Difference {
-  double rmse = 0, max = 0;
-};
-
-// RGBA only; depth is compared by depth_ratio (the nearest piece in a footprint is nearer than
-// the plane at the footprint's centre).
-Difference compare(const Image& a, const Image& b) {
-  Difference d;
-  EXPECT_EQ(a.pixels.size(), b.pixels.size());
-  if (a.pixels.size() != b.pixels.size()) return d;
-  size_t n = 0;
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x)
-      for (int c = 0; c < 4; ++c, ++n) {
-        const double e = std::abs(double(a.at(x, y, c)) - double(b.at(x, y, c)));
-        d.rmse += e * e;
-        d.max = std::max(d.max, e);
-      }
-  d.rmse = std::sqrt(d.rmse / double(std::max<size_t>(1, n)));
-  return d;
-}
+// The images are compared over RGBA only (kRgba); depth is compared by depth_ratio (the nearest
+// piece in a footprint is nearer than the plane at the footprint's centre).
 
 // The largest relative difference of the Z channels where both saw something.
 double depth_ratio(const Image& a, const Image& b) {
@@ -113,12 +92,6 @@ double depth_ratio(const Image& a, const Image& b) {
   return worst;
 }
 
-double mean(const Image& image) {
-  double sum = 0;
-  for (float v : image.pixels) sum += v;
-  return sum / double(std::max<size_t>(1, image.pixels.size()));
-}
-
 TEST(TriangleSurface, RendersAsThePolygonItReplacesInBothHiders) {
   const Scene polygon = build_scene(kQuadScene);
   ASSERT_EQ(polygon.surfaces.polygons.size(), 1u);
@@ -126,9 +99,9 @@ TEST(TriangleSurface, RendersAsThePolygonItReplacesInBothHiders) {
   ASSERT_EQ(triangles.surfaces.triangles.size(), 2u);
   for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
     SCOPED_TRACE(hider == HiderKind::Distance ? "distance" : "stochastic");
-    const Image a = render(polygon, hider, 1), b = render(triangles, hider, 1);
-    ASSERT_GT(mean(a), 0.05) << "the quad is lit and seen";
-    const Difference d = compare(a, b);
+    const Image a = render_image(polygon, hider, 1), b = render_image(triangles, hider, 1);
+    ASSERT_GT(channel_mean(a), 0.05) << "the quad is lit and seen";
+    const ImageDifference d = compare(a, b, kRgba);
     // The same surface: only the shared diagonal may differ, by rounding.
     EXPECT_LT(d.rmse, 2e-3);
     EXPECT_LT(d.max, 2e-2);
@@ -141,8 +114,8 @@ TEST(TriangleSurface, PiecesSmallerThanAPixelCoverTheirFootprint) {
   const Scene polygon = build_scene(kQuadScene);
   const Scene fine = as_fine_triangles(polygon, 200);  // about 8 pieces across a pixel
   ASSERT_EQ(fine.surfaces.triangles.size(), 80000u);
-  const Image a = render(polygon, HiderKind::Distance, 1), b = render(fine, HiderKind::Distance, 1);
-  const Difference d = compare(a, b);
+  const Image a = render_image(polygon, HiderKind::Distance, 1), b = render_image(fine, HiderKind::Distance, 1);
+  const ImageDifference d = compare(a, b, kRgba);
   EXPECT_LT(d.rmse, 2e-3);
   EXPECT_LT(d.max, 2e-2);
   // The plane is tilted 27 degrees to the view: across one pixel footprint its depth changes by
@@ -174,7 +147,8 @@ TEST(TriangleSurface, PolygonMeshFacesSmallerThanAPixelCoverTheirFootprint) {
   rib.replace(rib.find(polygon_line), polygon_line.size(), mesh);
   const Scene polygon = build_scene(kQuadScene), faces = build_scene(rib);
   ASSERT_EQ(faces.surfaces.polygons.size(), size_t(n * n));
-  const Difference d = compare(render(polygon, HiderKind::Distance, 1), render(faces, HiderKind::Distance, 1));
+  const ImageDifference d =
+      compare(render_image(polygon, HiderKind::Distance, 1), render_image(faces, HiderKind::Distance, 1), kRgba);
   EXPECT_LT(d.rmse, 2e-3);
   EXPECT_LT(d.max, 2e-2);
 }
@@ -182,7 +156,7 @@ TEST(TriangleSurface, PolygonMeshFacesSmallerThanAPixelCoverTheirFootprint) {
 TEST(TriangleSurface, SameImageOnOneAndTwoThreads) {
   const Scene triangles = as_triangles(build_scene(kQuadScene));
   for (HiderKind hider : {HiderKind::Stochastic, HiderKind::Distance}) {
-    const Image one = render(triangles, hider, 1), two = render(triangles, hider, 2);
+    const Image one = render_image(triangles, hider, 1), two = render_image(triangles, hider, 2);
     EXPECT_EQ(one.pixels, two.pixels);
   }
 }

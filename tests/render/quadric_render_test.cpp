@@ -8,13 +8,15 @@
 #include <sstream>
 #include <string>
 
-#include "integrator/built_scene.h"
-#include "integrator/render_frame.h"
+#include "support/pixel_measures.h"
+#include "support/render.h"
+#include "support/scenes_from_rib.h"
 
 namespace darc {
 namespace {
 
 using test::build_scene;
+using test::render_image;
 
 constexpr int kSize = 64;            // pixels per side
 constexpr double kHalfWindow = 2.0;  // the screen window is [-2, 2]^2 world units
@@ -31,15 +33,6 @@ std::string orthographic_frame(const std::string& world, int samples = 4) {
     << " " << -kHalfWindow << " " << kHalfWindow << "\nWorldBegin\n"
     << world << "WorldEnd\n";
   return s.str();
-}
-
-Image render(const Scene& scene, HiderKind hider, int threads = 1) {
-  Diagnostics diag([](const Diagnostic&) {});
-  RenderOptions options;
-  options.hider = hider;
-  options.threads = threads;
-  FrameStats stats;
-  return render_frame(scene, options, diag, stats);
 }
 
 // Sum of a channel over pixel row j, in world units of width.
@@ -90,7 +83,7 @@ TEST(QuadricRender, RowCoverageIsTheAnalyticOutlineInBothHiders) {
     SCOPED_TRACE(o.name);
     Scene scene = build_scene(orthographic_frame("Surface \"constant\"\n" + o.rib));
     ASSERT_EQ(scene.surfaces.quadrics.size(), 1u);
-    Image distance = render(scene, HiderKind::Distance), stochastic = render(scene, HiderKind::Stochastic);
+    Image distance = render_image(scene, HiderKind::Distance), stochastic = render_image(scene, HiderKind::Stochastic);
     const int alpha = distance.channel_index("A");
     ASSERT_GE(alpha, 0);
     double covered = 0;
@@ -111,7 +104,7 @@ TEST(QuadricRender, SidesOneHidesTheBack) {
   for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
     auto coverage = [&](const std::string& attributes) {
       Scene scene = build_scene(orthographic_frame("Surface \"constant\"\n" + attributes + disk));
-      Image image = render(scene, hider);
+      Image image = render_image(scene, hider);
       return row_coverage(image, kSize / 2, image.channel_index("A"));
     };
     EXPECT_NEAR(coverage(""), 2.0, kRowTolerance) << "two-sided: seen from behind";
@@ -132,8 +125,8 @@ TEST(QuadricRender, OrientationInsideTurnsTheNormalOver) {
   const std::string trough = "Translate 0 0 5 Rotate 90 1 0 0 Cylinder 1 -1.5 1.5 180\n";
   for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
     SCOPED_TRACE(to_string(hider));
-    Image outside = render(build_scene(orthographic_frame(world + trough)), hider);
-    Image inside = render(build_scene(orthographic_frame(world + "Orientation \"inside\"\n" + trough)), hider);
+    Image outside = render_image(build_scene(orthographic_frame(world + trough)), hider);
+    Image inside = render_image(build_scene(orthographic_frame(world + "Orientation \"inside\"\n" + trough)), hider);
     const int alpha = outside.channel_index("A");
     EXPECT_EQ(row_coverage(outside, kSize / 2, alpha), 0.0);
     EXPECT_NEAR(row_coverage(inside, kSize / 2, alpha), 2.0, kRowTolerance);
@@ -161,12 +154,10 @@ TEST(QuadricRender, OneAndTwoThreadsGiveIdenticalImages) {
   Scene scene = build_scene(rib);
   ASSERT_EQ(scene.surfaces.quadrics.size(), 6u);
   for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
-    Image one = render(scene, hider, 1), two = render(scene, hider, 2);
+    Image one = render_image(scene, hider, 1), two = render_image(scene, hider, 2);
     ASSERT_EQ(one.pixels.size(), two.pixels.size());
     EXPECT_TRUE(one.pixels == two.pixels) << to_string(hider);
-    double sum = 0;
-    for (float v : one.pixels) sum += v;
-    EXPECT_GT(sum, 100.0) << "something was drawn";
+    EXPECT_GT(test::channel_sum(one), 100.0) << "something was drawn";
   }
 }
 

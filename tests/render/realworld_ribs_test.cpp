@@ -2,35 +2,23 @@
 // see its SOURCES.md): each renders, with its documented exit code, and its image shows what
 // the file describes (a property of each picture, not a golden image). Skipped with a message
 // when ../shared is absent.
-#include "render_test_util.h"
-
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <vector>
+
+#include "support/darc_command.h"
+#include "support/image_compare.h"
+#include "support/pixel_counts.h"
+#include "support/shared_ribs.h"
 
 namespace darc::test {
 namespace {
 
-fs::path realworld_ribs() { return fs::path(DARC_SHARED_RIBS_DIR) / "realworld"; }
-
-#define REQUIRE_REALWORLD_RIBS()              \
-  if (!fs::is_directory(realworld_ribs())) \
-  GTEST_SKIP() << "real-world RIBs not found at " << realworld_ribs() << ": conformance skipped"
-
-using PixelTest = std::function<bool(float r, float g, float b)>;
-
-// Renders a file in a scratch directory (its outputs land there, named by its Display lines).
-RunResult render_realworld(const ScratchDir& dir, const std::string& file, const std::string& extra = "") {
-  return run_darc(dir.path(), extra + " --threads 2 '" + (realworld_ribs() / file).string() + "'");
-}
-
-int count(const Pixels& p, const PixelTest& on) {
-  int n = 0;
-  for (int y = 0; y < p.height; ++y)
-    for (int x = 0; x < p.width; ++x)
-      if (on(p.at(x, y, 0), p.at(x, y, 1), p.at(x, y, 2))) ++n;
-  return n;
+// Renders a file in a scratch directory (its outputs land there, named by its Display lines) and
+// reads `image`, the one the test looks at.
+FileRender render_realworld(const ScratchDir& dir, const std::string& file, const std::string& image,
+                            const std::string& extra = "") {
+  return render_file(dir, shared_ribs("realworld") / file, extra + " --threads 2", image);
 }
 
 // The sizes of the 4-connected regions of "on" pixels with at least min_size pixels, largest first.
@@ -66,70 +54,52 @@ std::vector<int> regions(const Pixels& p, const PixelTest& on, int min_size) {
   return big;
 }
 
-int max_runs_along_rows(const Pixels& p, const PixelTest& on) {
-  int best = 0;
-  for (int y = 0; y < p.height; ++y) {
-    int runs = 0;
-    bool prev = false;
-    for (int x = 0; x < p.width; ++x) {
-      const bool v = on(p.at(x, y, 0), p.at(x, y, 1), p.at(x, y, 2));
-      if (v && !prev) ++runs;
-      prev = v;
-    }
-    best = std::max(best, runs);
-  }
-  return best;
-}
-
 const PixelTest lit = [](float r, float g, float b) { return r + g + b > 0.15f; };
 
 TEST(RealworldRibs, Bug940418ManyCubicStrandsAreDrawnAsSeparateBlades) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-940418");
-  const RunResult r = render_realworld(dir, "Bugs_Bug940418_Bug940418.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "Bug940418.tif", img));
+  const FileRender f = render_realworld(dir, "Bugs_Bug940418_Bug940418.rib", "Bug940418.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  const Pixels& img = *f.image;
   EXPECT_EQ(img.width, 320);
-  EXPECT_GT(count(img, lit), 300) << "a tuft of plastic strands in the middle of the frame";
+  EXPECT_GT(count_pixels(img, lit), 300) << "a tuft of plastic strands in the middle of the frame";
   EXPECT_GE(max_runs_along_rows(img, lit), 8) << "many strands cross one row";
 }
 
 TEST(RealworldRibs, BezierGrassIsGreenTaperingBlades) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-bezier");
-  const RunResult r = render_realworld(dir, "content_ribs_features_curves_bezier.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("additional displays"), std::string::npos) << "the framebuffer display is reported";
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "bezier.tif", img));
+  const FileRender f = render_realworld(dir, "content_ribs_features_curves_bezier.rib", "bezier.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  EXPECT_NE(f.run.err.find("additional displays"), std::string::npos) << "the framebuffer display is reported";
+  const Pixels& img = *f.image;
   EXPECT_EQ(img.width, 480);
   const PixelTest green = [](float r, float g, float b) { return g > 0.05f && g > 1.5f * r && g > 1.5f * b; };
-  EXPECT_GT(count(img, green), 4000);
-  EXPECT_EQ(count(img, [](float r, float g, float b) { return r > g + 0.02f || b > g + 0.02f; }), 0)
+  EXPECT_GT(count_pixels(img, green), 4000);
+  EXPECT_EQ(count_pixels(img, [](float r, float g, float b) { return r > g + 0.02f || b > g + 0.02f; }), 0)
       << "nothing but grass";
   EXPECT_GE(max_runs_along_rows(img, green), 12) << "many separate blades";
 }
 
 TEST(RealworldRibs, DelayedReadArchiveBringsInItsSphere) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-delayed");
-  const RunResult r = render_realworld(dir, "delayedproc.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "delayedproc.tif", img));
+  const FileRender f = render_realworld(dir, "delayedproc.rib", "delayedproc.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  const Pixels& img = *f.image;
   const PixelTest yellow = [](float r, float g, float b) { return r > 0.5f && g > 0.5f && b < 0.2f; };
   const std::vector<int> discs = regions(img, yellow, 50);
   ASSERT_EQ(discs.size(), 1u) << "one constant-shaded sphere from the archive";
-  EXPECT_EQ(count(img, [](float r, float g, float b) { return b > 0.02f || std::abs(r - g) > 0.02f; }), 0)
+  EXPECT_EQ(count_pixels(img, [](float r, float g, float b) { return b > 0.02f || std::abs(r - g) > 0.02f; }), 0)
       << "nothing else in the frame: every other pixel is black or a yellow edge";
 }
 
 TEST(RealworldRibs, ArchiveAloneIsAnErrorOutsideTheWorld) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-archive");
   // delayed_archive.rib is the archive delayedproc.rib reads: a bare Sphere, meaningless alone.
-  const RunResult r = render_realworld(dir, "delayed_archive.rib");
+  const RunResult r = render_realworld(dir, "delayed_archive.rib", /*image=*/"").run;
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_NE(r.err.find("delayed_archive.rib:1:1: error: Sphere: Sphere outside WorldBegin/WorldEnd"),
             std::string::npos)
@@ -137,59 +107,60 @@ TEST(RealworldRibs, ArchiveAloneIsAnErrorOutsideTheWorld) {
 }
 
 TEST(RealworldRibs, VolumeBoxEdgesAreLinearCurves) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-volume");
-  const RunResult r = render_realworld(dir, "tools_shadeops_sci_volumes_volume.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("Atmosphere: not supported"), std::string::npos) << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "volume.tif", img));
+  const FileRender f = render_realworld(dir, "tools_shadeops_sci_volumes_volume.rib", "volume.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  EXPECT_NE(f.run.err.find("Atmosphere: not supported"), std::string::npos) << f.run.err;
+  const Pixels& img = *f.image;
   EXPECT_EQ(img.width, 640);
   const PixelTest bright = [](float r, float g, float b) { return r + g + b > 1.5f; };
   const std::vector<int> edges = regions(img, bright, 200);
   ASSERT_GE(edges.size(), 1u);
   EXPECT_GT(edges[0], 2000) << "the twelve edges of the box are joined at its corners";
-  EXPECT_LT(count(img, bright), img.width * img.height / 10) << "thin lines, not filled faces";
+  EXPECT_LT(count_pixels(img, bright), img.width * img.height / 10) << "thin lines, not filled faces";
 }
 
 TEST(RealworldRibs, Bug1102598UnknownBasisIsAnErrorAndTheCurvesStillDrawOverTheWhitePatch) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-1102598");
-  const RunResult r = render_realworld(dir, "Bugs_Bug1102598_Bug1102598.rib");
-  EXPECT_EQ(r.exit_code, 3) << "an unknown basis name is an error (the image is still written)";
-  EXPECT_NE(r.err.find("Bugs_Bug1102598_Bug1102598.rib:19:1: error: Basis: unknown basis \"spam\""), std::string::npos)
-      << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "Bug1102598.tif", img));
+  const FileRender f = render_realworld(dir, "Bugs_Bug1102598_Bug1102598.rib", "Bug1102598.tif");
+  EXPECT_EQ(f.run.exit_code, 3) << "an unknown basis name is an error (the image is still written)";
+  EXPECT_NE(f.run.err.find("Bugs_Bug1102598_Bug1102598.rib:19:1: error: Basis: unknown basis \"spam\""),
+            std::string::npos)
+      << f.run.err;
+  ASSERT_TRUE(f.image.has_value());
+  const Pixels& img = *f.image;
   const auto header = read_image_header(dir / "Bug1102598.tif");
   ASSERT_TRUE(header.has_value());
   // TIFF has no custom attributes: the error count goes in its ImageDescription.
   EXPECT_NE(header->get_string_attribute("ImageDescription").find("darc:errors=1"), std::string::npos)
       << "the image says it was rendered despite errors";
   const PixelTest white = [](float r, float g, float b) { return std::min({r, g, b}) > 0.9f; };
-  EXPECT_GT(count(img, white), img.width * img.height * 8 / 10) << "the constant white bilinear Patch fills the view";
+  EXPECT_GT(count_pixels(img, white), img.width * img.height * 8 / 10)
+      << "the constant white bilinear Patch fills the view";
   const PixelTest red = [](float r, float g, float b) { return r > 0.6f && g < 0.6f && b < 0.6f; };
-  EXPECT_GT(count(img, red), 150) << "the red cubic curve (the previous basis: the unknown one is not applied)";
+  EXPECT_GT(count_pixels(img, red), 150) << "the red cubic curve (the previous basis: the unknown one is not applied)";
   const PixelTest hull = [](float r, float g, float b) { return r > 0.6f && g > 0.6f && b < 0.75f && b < r - 0.1f; };
-  EXPECT_GT(count(img, hull), 100) << "the yellowish linear control polygon";
+  EXPECT_GT(count_pixels(img, hull), 100) << "the yellowish linear control polygon";
 }
 
 TEST(RealworldRibs, ShadowposCurvesAndSphereShadowTheGroundPatch) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-shadowpos");
-  const RunResult r = render_realworld(dir, "Shadows_shadowpos_1.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("unknown light shader \"spot\""), std::string::npos) << "the custom light falls back, said so";
+  const FileRender f = render_realworld(dir, "Shadows_shadowpos_1.rib", "shadowpos_1.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  EXPECT_NE(f.run.err.find("unknown light shader \"spot\""), std::string::npos)
+      << "the custom light falls back, said so";
   EXPECT_TRUE(fs::exists(dir / "shadow.z.tif")) << "the shadow-map pass is rendered as a depth image";
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "shadowpos_1.tif", img));
+  const Pixels& img = *f.image;
   EXPECT_EQ(img.width, 320);
   const PixelTest ground = [](float r, float g, float b) { return r > 0.3f && r >= g && g >= b - 0.01f && r - b < 0.2f; };
   const PixelTest green = [](float r, float g, float b) { return g > 0.15f && g > 2 * r && g > 2 * b; };
   const PixelTest yellow = [](float r, float g, float b) { return r > 0.3f && g > 0.3f && b < 0.5f * g; };
-  EXPECT_GT(count(img, ground), img.width * img.height / 3) << "the matte Patch ground";
-  EXPECT_GT(count(img, green), 2000) << "the green sphere";
-  EXPECT_GT(count(img, yellow), 1000) << "the yellow strands";
+  EXPECT_GT(count_pixels(img, ground), img.width * img.height / 3) << "the matte Patch ground";
+  EXPECT_GT(count_pixels(img, green), 2000) << "the green sphere";
+  EXPECT_GT(count_pixels(img, yellow), 1000) << "the yellow strands";
   // Below the strands, on the ground, their shadow and the sphere's: dark pixels in the lower
   // half, where without the ground there would be only background.
   const PixelTest dark = [](float r, float g, float b) { return r + g + b < 0.1f; };
@@ -201,12 +172,11 @@ TEST(RealworldRibs, ShadowposCurvesAndSphereShadowTheGroundPatch) {
 }
 
 TEST(RealworldRibs, ShadtestSphereCastsAShadowOnTheGroundPatch) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-shadtest");
-  const RunResult r = render_realworld(dir, "Shadows_shadtest.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "shadtest.tif", img));
+  const FileRender f = render_realworld(dir, "Shadows_shadtest.rib", "shadtest.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  const Pixels& img = *f.image;
   EXPECT_EQ(img.width, 200);
   EXPECT_EQ(img.height, 150);
   // The ground fills the lower half of the frame, lit by the spot except in the sphere's shadow,
@@ -224,18 +194,18 @@ TEST(RealworldRibs, ShadtestSphereCastsAShadowOnTheGroundPatch) {
   const std::vector<int> shadows = regions(lower, shadowed, 200);
   ASSERT_GE(shadows.size(), 1u) << "a shadow region on the ground";
   EXPECT_GT(shadows[0], 600) << "the sphere's shadow";
-  EXPECT_EQ(count(lower, [](float r, float g, float b) { return r + g + b <= 0.1f; }), img.width * img.height / 2)
+  EXPECT_EQ(count_pixels(lower, [](float r, float g, float b) { return r + g + b <= 0.1f; }),
+            img.width * img.height / 2)
       << "no background below the horizon: the ground Patch is there";
 }
 
 TEST(RealworldRibs, Subdiv1IsOneSmoothLimitSurface) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-subdiv1");
-  const RunResult r = render_realworld(dir, "Subdivision_subdiv1.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.err.find("nothing renderable"), std::string::npos) << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "subdiv1.tif", img));
+  const FileRender f = render_realworld(dir, "Subdivision_subdiv1.rib", "subdiv1.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  EXPECT_EQ(f.run.err.find("nothing renderable"), std::string::npos) << f.run.err;
+  const Pixels& img = *f.image;
   const std::vector<int> blobs = regions(img, lit, 20);
   ASSERT_EQ(blobs.size(), 1u) << "the subdivided tetrahedron is one surface";
   EXPECT_GT(blobs[0], img.width * img.height / 8);
@@ -260,29 +230,29 @@ TEST(RealworldRibs, Subdiv1IsOneSmoothLimitSurface) {
 }
 
 TEST(RealworldRibs, TmapTestShowsItsFivePatchesDiskAndPolygons) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-tmap");
-  const RunResult r = render_realworld(dir, "Texturing_tmap_test.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.err.find("is not supported: skipped"), std::string::npos) << "every primitive is drawn: " << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "tmap_test.tif", img));
+  const FileRender f = render_realworld(dir, "Texturing_tmap_test.rib", "tmap_test.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  EXPECT_EQ(f.run.err.find("is not supported: skipped"), std::string::npos)
+      << "every primitive is drawn: " << f.run.err;
+  const Pixels& img = *f.image;
   const std::vector<int> objects = regions(img, lit, 100);
   // A bilinear Patch, a bicubic Patch, a Disk, PointsPolygons, a periodic bicubic PatchMesh and a
   // bilinear PatchMesh: four separate regions in the picture (two pairs touch).
   EXPECT_GE(objects.size(), 4u);
-  EXPECT_GT(count(img, lit), img.width * img.height / 4);
+  EXPECT_GT(count_pixels(img, lit), img.width * img.height / 4);
 }
 
 TEST(RealworldRibs, DeformationShowsEveryPrimitiveKind) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-deformation");
-  const RunResult r = render_realworld(dir, "content_ribs_features_motionblur_deformation.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("motion blur is not supported: the first motion sample is used"), std::string::npos);
-  EXPECT_EQ(r.err.find("is not supported: skipped"), std::string::npos) << "every primitive is drawn: " << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "deformation.tif", img));
+  const FileRender f = render_realworld(dir, "content_ribs_features_motionblur_deformation.rib", "deformation.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  EXPECT_NE(f.run.err.find("motion blur is not supported: the first motion sample is used"), std::string::npos);
+  EXPECT_EQ(f.run.err.find("is not supported: skipped"), std::string::npos)
+      << "every primitive is drawn: " << f.run.err;
+  const Pixels& img = *f.image;
   // Subdivision surface, sphere, cylinder, cone, hyperboloid, paraboloid, disk, polygons: each
   // its own region in a grid; and the four Points, a few pixels each.
   const std::vector<int> big = regions(img, lit, 200);
@@ -292,16 +262,15 @@ TEST(RealworldRibs, DeformationShowsEveryPrimitiveKind) {
 }
 
 TEST(RealworldRibs, VaseAndTeapotPatchMeshesRenderInTheirLastFrame) {
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-vase");
   // With the default (distance) hider, at half its resolution to keep the test short under the
   // sanitizers.
-  const RunResult r = render_realworld(dir, "content_ribs_scenes_vase_vase.rib", "--res 128x96");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.err.find("nothing renderable"), std::string::npos) << r.err;
+  const FileRender f = render_realworld(dir, "content_ribs_scenes_vase_vase.rib", "vase.tif", "--res 128x96");
+  ASSERT_TRUE(rendered_cleanly(f));
+  EXPECT_EQ(f.run.err.find("nothing renderable"), std::string::npos) << f.run.err;
   EXPECT_TRUE(fs::exists(dir / "shad1.map.tif") && fs::exists(dir / "shad2.map.tif")) << "the two shadow passes";
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "vase.tif", img));
+  const Pixels& img = *f.image;
   EXPECT_EQ(img.width, 128);
   EXPECT_EQ(img.height, 96);
   const PixelTest vase = [](float r, float g, float b) { return g > r + 0.03f && g > b + 0.03f; };
@@ -309,20 +278,7 @@ TEST(RealworldRibs, VaseAndTeapotPatchMeshesRenderInTheirLastFrame) {
   const std::vector<int> vases = regions(img, vase, 100);
   ASSERT_GE(vases.size(), 1u);
   EXPECT_GT(vases[0], 600) << "the green vase";
-  EXPECT_GT(count(img, bright), 1000) << "the white teapot and the lit floor";
-}
-
-// Root mean square difference over R, G, B, A.
-double rmse(const Pixels& a, const Pixels& b) {
-  double sum = 0;
-  size_t n = 0;
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x)
-      for (int c = 0; c < 4; ++c, ++n) {
-        const double d = double(a.at(x, y, c)) - double(b.at(x, y, c));
-        sum += d * d;
-      }
-  return n ? std::sqrt(sum / double(n)) : 0.0;
+  EXPECT_GT(count_pixels(img, bright), 1000) << "the white teapot and the lit floor";
 }
 
 TEST(RealworldRibs, VaseWithTheDefaultHiderIsCloserToTheReferenceThanOneSampleAPixel) {
@@ -330,21 +286,20 @@ TEST(RealworldRibs, VaseWithTheDefaultHiderIsCloserToTheReferenceThanOneSampleAP
   // hider at 1 sample a pixel, against the stochastic hider at 8x8: closer than the stochastic
   // hider at 1x1. Before analytic surface coverage and shadow pencils the distance hider lost the
   // shadows and striped the floor (0.046 at full size, worse than stochastic 1x1's 0.038).
-  REQUIRE_REALWORLD_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("realworld");
   ScratchDir dir("rw-vase-default");
   auto render = [&](const std::string& args, const std::string& name) {
-    const RunResult r = render_realworld(dir, "content_ribs_scenes_vase_vase.rib",
-                                         "--res 128x96 --frames 3 -o " + name + " " + args);
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    Pixels img;
-    EXPECT_TRUE(read_image(dir / name, img)) << name;
-    return img;
+    const FileRender f = render_realworld(dir, "content_ribs_scenes_vase_vase.rib", name,
+                                          "--res 128x96 --frames 3 -o " + name + " " + args);
+    EXPECT_TRUE(rendered_cleanly(f)) << name;
+    return f.image.value_or(Pixels{});
   };
   const Pixels reference = render("--hider stochastic --pixel-samples 8", "reference.exr");
   const Pixels stochastic = render("--hider stochastic --pixel-samples 1", "stochastic1.exr");
   const Pixels distance = render("--pixel-samples 1", "distance1.exr");
   ASSERT_EQ(distance.width, reference.width);
-  const double distance_error = rmse(distance, reference), stochastic_error = rmse(stochastic, reference);
+  const double distance_error = compare(distance, reference).rmse,
+               stochastic_error = compare(stochastic, reference).rmse;
   EXPECT_LT(distance_error, 0.6 * stochastic_error)
       << "distance 1x1 RMSE " << distance_error << ", stochastic 1x1 " << stochastic_error;
 }

@@ -1,8 +1,8 @@
 // A RenderMan 21+ scene (PxrSurface lit by PxrDistantLight) renders like the RI scene it maps to
 // (plastic lit by distantlight with the same colours, gains and light), with both hiders.
-#include <cmath>
-
-#include "render/render_test_util.h"
+#include "support/darc_command.h"
+#include "support/image_compare.h"
+#include "support/image_files.h"
 
 namespace darc::test {
 namespace {
@@ -19,12 +19,6 @@ std::string frame(const std::string& display, const std::string& light, const st
          surface +
          "\n    Sphere 1 -1 1 360\n  AttributeEnd\n"
          "WorldEnd\n";
-}
-
-double rmse(const Pixels& a, const Pixels& b) {
-  double sum = 0;
-  for (size_t i = 0; i < a.v.size(); ++i) sum += double(a.v[i] - b.v[i]) * (a.v[i] - b.v[i]);
-  return std::sqrt(sum / double(a.v.size()));
 }
 
 double mean_red(const Pixels& p) {
@@ -57,7 +51,7 @@ TEST(RisRender, PxrSurfaceUnderPxrDistantLightLooksLikeItsPlasticAndDistantlight
     ASSERT_TRUE(read_image(dir / "ri.exr", ri));
     ASSERT_EQ(ris.v.size(), ri.v.size());
     EXPECT_GT(mean_red(ri), 0.05) << "the sphere is lit: the comparison means something";
-    EXPECT_LT(rmse(ris, ri), 1e-6);
+    EXPECT_LT(compare(ris, ri).rmse, 1e-6);
   }
 }
 

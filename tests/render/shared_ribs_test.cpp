@@ -1,48 +1,29 @@
 // Conformance: every RIB file in ../shared/ribs/aqsis renders with exit code 0, and each image
 // shows what the file is about. Skipped (with a message) when ../shared is absent.
-#include "render_test_util.h"
-
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+
+#include "support/darc_command.h"
+#include "support/pixel_counts.h"
+#include "support/shared_ribs.h"
 
 namespace darc::test {
 namespace {
 
-#define REQUIRE_SHARED_RIBS() \
-  if (!have_shared_ribs()) GTEST_SKIP() << "shared RIBs not found at " << shared_ribs() << ": conformance skipped"
-
-// Renders a shared RIB in a scratch directory (outputs land there, named by Display).
-RunResult render_shared(const ScratchDir& dir, const std::string& file, const std::string& extra = "") {
-  return run_darc(dir.path(), extra + " '" + (shared_ribs() / file).string() + "'");
-}
-
-int count_pixels(const Pixels& p, auto&& pred) {
-  int n = 0;
-  for (int y = 0; y < p.height; ++y)
-    for (int x = 0; x < p.width; ++x)
-      if (pred(p.at(x, y, 0), p.at(x, y, 1), p.at(x, y, 2))) ++n;
-  return n;
-}
-
-// Number of separate runs of "on" pixels along one image row.
-int runs_along_row(const Pixels& p, int y, auto&& pred) {
-  int runs = 0;
-  bool prev = false;
-  for (int x = 0; x < p.width; ++x) {
-    bool on = pred(p.at(x, y, 0), p.at(x, y, 1), p.at(x, y, 2));
-    if (on && !prev) ++runs;
-    prev = on;
-  }
-  return runs;
+// Renders a shared RIB in a scratch directory (outputs land there, named by Display) and reads
+// `image`, the one the test looks at.
+FileRender render_shared(const ScratchDir& dir, const std::string& file, const std::string& image,
+                         const std::string& extra = "") {
+  return render_file(dir, shared_ribs("aqsis") / file, extra, image);
 }
 
 TEST(SharedRibs, BezierGrassShowsManyTaperingBlades) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("bezier");
-  RunResult r = render_shared(dir, "Curves_bezier.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "bezier.tif", img));
+  const FileRender f = render_shared(dir, "Curves_bezier.rib", "bezier.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  const Pixels& img = *f.image;
   EXPECT_EQ(img.width, 320);
   EXPECT_EQ(img.height, 240);
   // The point light sits near the camera, so the camera-facing blades catch the plastic
@@ -56,18 +37,15 @@ TEST(SharedRibs, BezierGrassShowsManyTaperingBlades) {
   EXPECT_EQ(count_pixels(img, [](float r, float g, float b) { return r > g + 0.05f || b > g + 0.05f; }), 0)
       << "nothing but grass colours";
   // Many separate blades cross one image row.
-  int max_runs = 0;
-  for (int y = 0; y < img.height; ++y) max_runs = std::max(max_runs, runs_along_row(img, y, lit));
-  EXPECT_GE(max_runs, 8) << "expected many separate blades across a row";
+  EXPECT_GE(max_runs_along_rows(img, lit), 8) << "expected many separate blades across a row";
 }
 
 TEST(SharedRibs, CatmullRomCurveAndReferenceSquare) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("catmull");
-  RunResult r = render_shared(dir, "Curves_catmull-rom.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "catmull-rom.tif", img));
+  const FileRender f = render_shared(dir, "Curves_catmull-rom.rib", "catmull-rom.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  const Pixels& img = *f.image;
   // Surface "constant" with Color 0.8 0.8 1.0: the curve pixels are exactly that colour (8-bit
   // sRGB of 0.8 is 231/255 = 0.906).
   auto lilac = [](float r, float g, float b) { return b > 0.95f && r > 0.85f && r < 0.95f && g > 0.85f && g < 0.95f; };
@@ -77,35 +55,32 @@ TEST(SharedRibs, CatmullRomCurveAndReferenceSquare) {
 }
 
 TEST(SharedRibs, LinearCurveSeenEndOnAndSquare) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("linear");
-  RunResult r = render_shared(dir, "Curves_linear.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "linear.tif", img));
+  const FileRender f = render_shared(dir, "Curves_linear.rib", "linear.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  const Pixels& img = *f.image;
   auto lit = [](float r, float g, float b) { return r + g + b > 0.5f; };
   EXPECT_GT(count_pixels(img, lit), 100);
 }
 
 TEST(SharedRibs, LinCurveTest1FallsBackFromUnknownShader) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("lincurve1");
-  RunResult r = render_shared(dir, "Curves_lincurve_test1.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("show_st"), std::string::npos) << "expected a warning naming the unknown shader";
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "lincurve_test1.tif", img));
+  const FileRender f = render_shared(dir, "Curves_lincurve_test1.rib", "lincurve_test1.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  EXPECT_NE(f.run.err.find("show_st"), std::string::npos) << "expected a warning naming the unknown shader";
+  const Pixels& img = *f.image;
   auto lit = [](float r, float g, float b) { return r + g + b > 0.3f; };
   EXPECT_GT(count_pixels(img, lit), 2000);
 }
 
 TEST(SharedRibs, LinCurveTest2OneSidedCurveShowsLessThanTwoSided) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("lincurve2");
-  RunResult r = render_shared(dir, "Curves_lincurve_test2.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "lincurve_test2.tif", img));
+  const FileRender f = render_shared(dir, "Curves_lincurve_test2.rib", "lincurve_test2.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  const Pixels& img = *f.image;
   auto blue = [](float r, float g, float b) { return b > 0.05f && r < 0.5f * b && g < 0.5f * b; };
   auto purple = [](float r, float g, float b) { return r > 0.05f && b > 0.05f && g < 0.5f * std::min(r, b); };
   auto red = [](float r, float g, float b) { return r > 0.05f && g < 0.3f * r && b < 0.3f * r; };
@@ -119,10 +94,9 @@ TEST(SharedRibs, LinCurveTest2OneSidedCurveShowsLessThanTwoSided) {
 }
 
 TEST(SharedRibs, AnimWritesFiftyFramesWithAMovingSphere) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("anim");
-  RunResult r = render_shared(dir, "Misc_anim.rib", "--res 80x60");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(rendered_cleanly(render_shared(dir, "Misc_anim.rib", "anim00.tif", "--res 80x60")));
   double cx_first = 0, cx_prev = -1;
   int moved = 0;
   for (int f = 0; f < 50; ++f) {
@@ -149,12 +123,11 @@ TEST(SharedRibs, AnimWritesFiftyFramesWithAMovingSphere) {
 }
 
 TEST(SharedRibs, GeneralPolygonsHaveHoles) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("genpoly");
-  RunResult r = render_shared(dir, "Polygons_genpoly_test.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "genpoly_test.tif", img));
+  const FileRender f = render_shared(dir, "Polygons_genpoly_test.rib", "genpoly_test.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  const Pixels& img = *f.image;
   auto red = [](float r, float g, float b) { return r > 0.2f && g < 0.4f * r && b < 0.4f * r; };
   auto yellow = [](float r, float g, float b) { return r > 0.2f && g > 0.6f * r && b < 0.4f * r; };
   EXPECT_GT(count_pixels(img, red), 500);
@@ -169,12 +142,11 @@ TEST(SharedRibs, GeneralPolygonsHaveHoles) {
 }
 
 TEST(SharedRibs, ReadArchiveBringsTheRedTriangle) {
-  REQUIRE_SHARED_RIBS();
+  SKIP_WITHOUT_SHARED_RIBS("aqsis");
   ScratchDir dir("readarchive");
-  RunResult r = render_shared(dir, "RIBProcessing_readarchive.rib");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  Pixels img;
-  ASSERT_TRUE(read_image(dir / "readarchive.tif", img));
+  const FileRender f = render_shared(dir, "RIBProcessing_readarchive.rib", "readarchive.tif");
+  ASSERT_TRUE(rendered_cleanly(f));
+  const Pixels& img = *f.image;
   auto red = [](float r, float g, float b) { return r > 0.9f && g < 0.1f && b < 0.1f; };
   auto yellow = [](float r, float g, float b) { return r > 0.9f && g > 0.9f && b < 0.1f; };
   auto white = [](float r, float g, float b) { return r > 0.9f && g > 0.9f && b > 0.9f; };

@@ -8,22 +8,16 @@
 #include <numbers>
 
 #include "core/geometry/curves/curve_distance_intersector.h"
+#include "support/curve_segments.h"
 
 namespace darc {
 namespace {
 
+using test::constant_width;
+using test::single_segment;
+using test::straight_x;
+
 constexpr float kTolerance = 1e-5f;
-
-CurveSet single_segment(const std::array<Vec3f, 4>& cp, const std::array<float, 4>& width) {
-  CurveSet set;
-  set.add_segment(cp, width, 0, 0);
-  set.mark_strand_ends(0);
-  return set;
-}
-
-// From (-1, 0, 5) to (1, 0, 5) along x.
-std::array<Vec3f, 4> straight_x() { return {Vec3f{-1, 0, 5}, {-1.0f / 3, 0, 5}, {1.0f / 3, 0, 5}, {1, 0, 5}}; }
-std::array<float, 4> constant_width(float w) { return {w, w, w, w}; }
 
 // An orthographic footprint: a square of side `side` whatever the depth.
 RayFootprint orthographic(float side) {

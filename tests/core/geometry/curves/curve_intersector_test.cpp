@@ -9,23 +9,16 @@
 #include <random>
 
 #include "core/math/curve_basis.h"
+#include "support/curve_segments.h"
 
 namespace darc {
 namespace {
 
+using test::constant_width;
+using test::single_segment;
+using test::straight_x;
+
 constexpr float kTolerance = 1e-5f;
-
-// A set holding one segment with the given Bézier control points and width coefficients.
-CurveSet single_segment(const std::array<Vec3f, 4>& cp, const std::array<float, 4>& width) {
-  CurveSet set;
-  set.add_segment(cp, width, 0, 0);
-  set.mark_strand_ends(0);
-  return set;
-}
-
-// A straight strand along x from (-1, 0, 5) to (1, 0, 5), as an elevated line.
-std::array<Vec3f, 4> straight_x() { return {Vec3f{-1, 0, 5}, {-1.0f / 3, 0, 5}, {1.0f / 3, 0, 5}, {1, 0, 5}}; }
-std::array<float, 4> constant_width(float w) { return {w, w, w, w}; }
 
 Ray ray_z(float x, float y, float z = 0) { return Ray{{x, y, z}, {0, 0, 1}}; }
 

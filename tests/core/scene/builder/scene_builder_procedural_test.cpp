@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "parser/rib_parser.h"
 #include "support/scenes_from_rib.h"
 
 namespace darc::test {

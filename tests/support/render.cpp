@@ -1,0 +1,41 @@
+#include "support/render.h"
+
+#include <gtest/gtest.h>
+
+#include <optional>
+
+#include "support/scenes_from_rib.h"
+
+namespace darc::test {
+
+RenderOptions render_options(HiderKind hider, int threads) {
+  RenderOptions options;
+  options.hider = hider;
+  options.threads = threads;
+  return options;
+}
+
+RenderedFrame render(const Scene& scene, const RenderOptions& options) {
+  Diagnostics diag([](const Diagnostic& d) {
+    if (d.severity == Severity::Error) ADD_FAILURE() << d.str();
+  });
+  RenderedFrame out;
+  out.image = render_frame(scene, options, diag, out.stats);
+  return out;
+}
+
+RenderedFrame render_rib(const std::string& rib, const RenderOptions& options) {
+  const std::optional<Scene> scene = build_frame(rib);
+  if (!scene) return {};
+  return render(*scene, options);
+}
+
+Image render_image(const Scene& scene, HiderKind hider, int threads) {
+  return render(scene, render_options(hider, threads)).image;
+}
+
+Image render_image(const std::string& rib, HiderKind hider, int threads) {
+  return render_rib(rib, render_options(hider, threads)).image;
+}
+
+}  // namespace darc::test
