@@ -71,6 +71,7 @@ struct Options {
   bool embree = false;        // measure the Embree peer (when built)
   std::string report_stem;    // "640": performance-640.md etc. with the 640 report's tables
   bool quick = false;         // label the report as the quick smoke run
+  bool references_only = false;  // fill the reference cache, measure and write nothing
   std::string accelerator = to_string(kDefaultAccelerator);  // "bvh" or "grid"
   // The secondary-ray report: references at threshold 0, the contribution-threshold sweeps,
   // performance-secondary.md.
@@ -324,6 +325,7 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
   report.reference_samples_per_axis = reference_settings.samples_per_axis;
   std::optional<Image> reference = reference_image(scene, *text, name, o, reference_settings, report.reference_seconds);
   if (!reference) return std::nullopt;
+  if (o.references_only) return report;
 
   // One untimed render first: the first render of a process also pays for starting the thread
   // pool and faulting in the scene's pages, which is no property of the setting measured first.
@@ -454,6 +456,9 @@ int main(int argc, char** argv) {
   app.add_option("--report-stem", o.report_stem,
                  "write performance-STEM.md, speed-vs-error-STEM.csv with work per ray and memory");
   app.add_flag("--quick", o.quick, "label the report as the quick smoke run");
+  app.add_flag("--references-only", o.references_only,
+               "render (or find cached) the references and stop: no timing, no report (a first, untimed "
+               "pass, e.g. at low priority while the machine is busy)");
   app.add_option("--accelerator", o.accelerator, "darc's acceleration structure (default: the renderer's)")
       ->check(CLI::IsMember({"bvh", "grid"}));
   app.add_flag("--secondary", o.secondary,
@@ -495,5 +500,6 @@ int main(int argc, char** argv) {
     if (!r) return 1;
     reports.push_back(std::move(*r));
   }
+  if (o.references_only) return 0;
   return write_outputs(o, reports) ? 0 : 1;
 }

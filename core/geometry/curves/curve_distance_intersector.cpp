@@ -51,6 +51,10 @@ struct DistanceState {
   bool oriented;
   Vec3f normal0, normal1, dir;
   ReachBound reach;  // the footprint's reach at ray parameter t
+  // Whether the reach only grows along the ray (apex at or before the origin: every camera
+  // ray), so that a depth range's largest reach is at its far end: the hot culls then skip the
+  // near end (the same value, fewer instructions).
+  bool reach_grows = true;
   // Best fragment so far, and the geometry its coverage mask needs.
   bool found = false;
   float coverage = 0, t = 0, u = 0, distance = 0;
@@ -83,11 +87,14 @@ struct DistanceState {
 
   // The largest reach over the depths [z0, z1] along the unit direction (none before the origin).
   float reach_over_depths(float z0, float z1) const {
+    if (reach_grows) return reach.at(std::max(0.0f, z1 / ray_length));
     return reach.max_over(std::max(0.0f, z0 / ray_length), std::max(0.0f, z1 / ray_length));
   }
   // The smallest: at the depth of the interval nearest the apex (the V's minimum).
   float least_reach_over_depths(float z0, float z1) const {
-    const float t0 = std::max(0.0f, z0 / ray_length), t1 = std::max(t0, z1 / ray_length);
+    const float t0 = std::max(0.0f, z0 / ray_length);
+    if (reach_grows) return reach.at(t0);
+    const float t1 = std::max(t0, z1 / ray_length);
     return reach.at(std::clamp(reach.apex_t, t0, t1));
   }
 
@@ -356,7 +363,8 @@ void distance_recursive(const Vec3f cp[4], const float width[4], float u0, float
     float hw = half_max_width(sub_width);
     if (!(hw > 0.0f)) continue;
     float z_hi = std::max(std::max(sub_cp[0].z, sub_cp[1].z), std::max(sub_cp[2].z, sub_cp[3].z));
-    float z_lo = std::min(std::min(sub_cp[0].z, sub_cp[1].z), std::min(sub_cp[2].z, sub_cp[3].z));
+    float z_lo = s.reach_grows ? z_hi
+                               : std::min(std::min(sub_cp[0].z, sub_cp[1].z), std::min(sub_cp[2].z, sub_cp[3].z));
     // Cull with the half-width plus the largest footprint over the sub-curve's depth range.
     float margin = hw + s.reach_over_depths(z_lo - hw, z_hi + hw);
     if (!bound_overlaps_ray(sub_cp, margin, s.t_min * s.ray_length, s.t_max * s.ray_length)) continue;
@@ -368,7 +376,7 @@ void distance_recursive(const Vec3f cp[4], const float width[4], float u0, float
 // across the end's line far from it (a loop, a Catmull-Rom swing), where it must not be cut.
 // Where the end is out of the footprint's reach, the footprint is wholly on one side of the
 // end's line for a straight strand anyway, so skipping the fall-off there changes nothing.
-bool end_within_reach(const Vec3f& end, float half_width, const DistanceState& s) {
+inline bool end_within_reach(const Vec3f& end, float half_width, const DistanceState& s) {
   return hypot2(end.x, end.y) <= half_width + s.reach_over_depths(end.z - half_width, end.z + half_width);
 }
 
@@ -406,8 +414,10 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   // Depth rejection first (cheapest): the hull's depth range against the ray's interval.
   float z_hi = std::max(std::max(z[0], z[1]), std::max(z[2], z[3]));
   float z_lo = std::min(std::min(z[0], z[1]), std::min(z[2], z[3]));
-  const float reach_far =
-      ray.reach.max_over(std::max(0.0f, (z_lo - hw) / ray.ray_length), std::max(0.0f, (z_hi + hw) / ray.ray_length));
+  const float t_far = std::max(0.0f, (z_hi + hw) / ray.ray_length);
+  const float reach_far = ray.reach.apex_t <= 0.0f  // grows along the ray: largest at the far end
+                              ? ray.reach.at(t_far)
+                              : ray.reach.max_over(std::max(0.0f, (z_lo - hw) / ray.ray_length), t_far);
   const float margin = hw + reach_far;
   if (z_hi + margin < ray.t_min * ray.ray_length || z_lo - margin > ray.t_max * ray.ray_length) return false;
   // Turn the frame in its plane so that x runs along the projected chord: the hull is then thin
@@ -439,6 +449,7 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   }
   s.dir = ray.dir;
   s.reach = ray.reach;
+  s.reach_grows = ray.reach.apex_t <= 0.0f;
 
   EndFalloff fall;
   float min_tangent = kEndOnTangentFraction * 2.0f * hw;
