@@ -38,8 +38,8 @@ struct PolygonShape {
   int source_face = 0;
   // One of several faces of a mesh, which together make one surface (set by the scene builder).
   bool piece = false;
-  // Which mesh a piece belongs to (its PointsPolygons request; set by the scene builder).
-  uint32_t mesh = 0;
+  // The layer a piece belongs to (SurfaceSet::layer: the scene builder gives its material).
+  uint32_t layer = 0;
   // The outer loop's world-space corners when the polygon is one convex loop (footprint
   // coverage works on them, SurfaceSet::convex_outline); empty otherwise.
   std::vector<Vec3f> convex_corners;

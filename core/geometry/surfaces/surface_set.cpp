@@ -62,7 +62,6 @@ bool SurfaceSet::convex_outline(uint32_t surface, ConvexOutline& out) const {
       if (n < 3 || n > out.corners.size()) return false;
       std::copy(shape.convex_corners.begin(), shape.convex_corners.end(), out.corners.begin());
       out.count = int(n);
-      // Polygon meshes' layers are kept apart from the triangle meshes' by the top bit.
       out.layer = layer(surface);
       return true;
     }
@@ -75,8 +74,8 @@ bool SurfaceSet::convex_outline(uint32_t surface, ConvexOutline& out) const {
 uint32_t SurfaceSet::layer(uint32_t surface) const {
   uint32_t i;
   switch (locate(surface, i)) {
-    case Kind::Triangle: return triangles.mesh(i);
-    case Kind::Polygon: return polygons[i].piece ? (0x80000000u | polygons[i].mesh) : kNoLayer;
+    case Kind::Triangle: return triangles.layer(i);
+    case Kind::Polygon: return polygons[i].piece ? polygons[i].layer : kNoLayer;
     case Kind::Sphere:
     case Kind::Quadric: return kNoLayer;
   }

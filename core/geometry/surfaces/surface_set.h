@@ -44,7 +44,6 @@ struct SurfaceSet {
   std::vector<Quadric> quadrics;  // Cone, Cylinder, Disk, Paraboloid, Hyperboloid, Torus
   // Per shape of each kind: an index into Scene::materials.
   std::vector<uint32_t> sphere_material, polygon_material, triangle_material, quadric_material;
-  uint32_t polygon_meshes = 0;  // PolygonShape::mesh numbers given so far
 
   size_t size() const { return spheres.size() + polygons.size() + triangles.size() + quadrics.size(); }
   bool empty() const { return size() == 0; }
@@ -83,7 +82,8 @@ struct SurfaceSet {
   // The outline of `surface` when it is planar and convex (every triangle; a polygon of one
   // convex loop with at most kMaxPolygonCorners corners); false for everything else.
   bool convex_outline(uint32_t surface, ConvexOutline& out) const;
-  // The layer (mesh) `surface` is a piece of; kNoLayer for a surface on its own.
+  // The layer `surface` is a piece of (its material, as the scene builder gives it: the patches
+  // of one surface, each its own request, meet without a seam); kNoLayer for a surface on its own.
   uint32_t layer(uint32_t surface) const;
   // The normal shading uses at p: the geometric one, except on triangles with vertex normals.
   Vec3f shading_normal(uint32_t surface, const Vec3f& p) const;

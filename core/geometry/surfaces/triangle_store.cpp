@@ -16,7 +16,7 @@ bool finite(const Vec3f& p) { return std::isfinite(p.x) && std::isfinite(p.y) &&
 
 }  // namespace
 
-size_t TriangleStore::add(const TriangleMeshData& world) {
+size_t TriangleStore::add(const TriangleMeshData& world, std::optional<uint32_t> layer) {
   const uint32_t base = uint32_t(P_.size());
   const size_t n = world.P.size();
   const bool has_normals = world.N.size() == n, has_uv = world.uv.size() == n;
@@ -43,7 +43,7 @@ size_t TriangleStore::add(const TriangleMeshData& world) {
     corners_.insert(corners_.end(), {base + a, base + b, base + c});
     face_normal_.push_back(Vec3f(normal / len));
     smooth_.push_back(has_normals ? 1 : 0);
-    mesh_.push_back(meshes_);
+    layer_.push_back(layer.value_or(meshes_));
     ++kept;
   }
   // Vertices without normals or uv in a store where other meshes have them: keep the arrays
@@ -124,7 +124,7 @@ Vec3f TriangleStore::shading_normal(uint32_t triangle, const Vec3f& p) const {
 size_t TriangleStore::memory_bytes() const {
   return P_.capacity() * sizeof(Vec3f) + N_.capacity() * sizeof(Vec3f) + uv_.capacity() * sizeof(Vec2f) +
          corners_.capacity() * sizeof(uint32_t) + face_normal_.capacity() * sizeof(Vec3f) + smooth_.capacity() +
-         mesh_.capacity() * sizeof(uint32_t);
+         layer_.capacity() * sizeof(uint32_t);
 }
 
 }  // namespace darc

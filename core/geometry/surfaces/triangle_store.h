@@ -10,6 +10,7 @@
 #include "core/math/vec.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace darc {
@@ -17,8 +18,10 @@ namespace darc {
 class TriangleStore {
  public:
   // Adds a world-space mesh; returns how many of its triangles were kept (degenerate ones, of
-  // zero area or with a non-finite vertex, are dropped).
-  size_t add(const TriangleMeshData& world);
+  // zero area or with a non-finite vertex, are dropped). Its triangles are pieces of `layer`
+  // (the scene builder gives their material, so that the patches of one surface, each its own
+  // request, are one layer), or of a layer of their own.
+  size_t add(const TriangleMeshData& world, std::optional<uint32_t> layer = std::nullopt);
 
   size_t size() const { return corners_.size() / 3; }
   BBox bounds(uint32_t triangle) const;
@@ -32,8 +35,9 @@ class TriangleStore {
   // The triangle's corners a, b, c: the store's shared vertices, bitwise the same for every
   // triangle that uses them (what makes footprint coverage watertight along shared edges).
   const Vec3f& corner(uint32_t triangle, int k) const { return P_[corners_[3 * size_t(triangle) + size_t(k)]]; }
-  // Which add() the triangle came from: the triangles of one mesh (one surface) share it.
-  uint32_t mesh(uint32_t triangle) const { return mesh_[triangle]; }
+  // The layer the triangle belongs to (SurfaceSet::layer): what add() was given, else which
+  // add() it came from.
+  uint32_t layer(uint32_t triangle) const { return layer_[triangle]; }
 
   // The unit face normal, (b - a) x (c - a) normalized (orientation not applied).
   Vec3f face_normal(uint32_t triangle) const { return face_normal_[triangle]; }
@@ -54,8 +58,8 @@ class TriangleStore {
   std::vector<uint32_t> corners_;  // 3 vertex indices per triangle
   std::vector<Vec3f> face_normal_;
   std::vector<uint8_t> smooth_;  // per triangle: has vertex normals
-  std::vector<uint32_t> mesh_;   // per triangle: the add() it came from
-  uint32_t meshes_ = 0;
+  std::vector<uint32_t> layer_;  // per triangle
+  uint32_t meshes_ = 0;          // add() calls so far
 };
 
 }  // namespace darc

@@ -6,6 +6,7 @@
 #include "core/scene/builder/graphics_state.h"
 #include "core/scene/ris/ris_patterns.h"
 #include "core/scene/scene.h"
+#include "core/geometry/surfaces/dicing_view.h"
 #include "core/geometry/surfaces/triangle_mesh_data.h"
 #include "parser/diagnostics.h"
 #include "parser/ri_target.h"
@@ -142,6 +143,9 @@ class SceneBuilder : public RiTarget {
   void add_patch_surface(PatchMeshDescription& mesh, const ParamList& params, const char* request,
                          const SourceLoc& loc);
   void add_nu_patch(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
+  // The frame's camera seen from the current object space, for tessellations that follow the
+  // screen (dicing_view.h); none outside the world block.
+  std::optional<DicingView> dicing_view() const;
   // Points, sub-pixel discs beside the curves (scene_builder_points.cpp).
   void add_points(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc);
   // Moves a tessellated surface from the current object space to the world and stores it with

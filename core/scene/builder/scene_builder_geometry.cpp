@@ -353,10 +353,9 @@ void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const s
   // The faces of a mesh (or a non-planar face's fan) meet edge to edge and may each be smaller
   // than a footprint: pieces of one surface (SurfaceSet::is_piece).
   const bool pieces = shapes.size() > 1;
-  const uint32_t mesh = scene_->surfaces.polygon_meshes++;
   for (PolygonShape& s : shapes) {
     s.piece = pieces;
-    s.mesh = mesh;
+    s.layer = material;
     scene_->surfaces.polygons.push_back(std::move(s));
     scene_->surfaces.polygon_material.push_back(material);
   }

@@ -95,9 +95,17 @@ void SceneBuilder::add_patch_surface(PatchMeshDescription& mesh, const ParamList
   mesh.points = control_points(params, request, true, mesh.height_field);
   warn_of_interpolated_colours(params, diag_, request, loc);
   std::string error;
-  const TriangleMeshData triangles = tessellate_patch_mesh(mesh, error);
+  const std::optional<DicingView> view = dicing_view();
+  const TriangleMeshData triangles = tessellate_patch_mesh(mesh, error, view ? &*view : nullptr);
   if (!error.empty()) throw RibError(error);
   add_triangle_mesh(triangles, make_material(loc));
+}
+
+std::optional<DicingView> SceneBuilder::dicing_view() const {
+  if (!in_world_ || !scene_) return std::nullopt;
+  const Camera& c = scene_->camera;
+  return make_dicing_view(ctm_, c.world_to_camera, c.projection == Camera::Projection::Perspective, c.fov_degrees,
+                          c.screen.right - c.screen.left, c.screen.top - c.screen.bottom, c.xres, c.yres);
 }
 
 void SceneBuilder::add_nu_patch(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc) {
@@ -110,7 +118,8 @@ void SceneBuilder::add_nu_patch(const PrimitiveRequest& r, const ParamList& para
   s.points = control_points(params, "NuPatch", false, height_field);
   warn_of_interpolated_colours(params, diag_, "NuPatch", loc);
   std::string error;
-  const TriangleMeshData triangles = tessellate_nurbs(s, error);
+  const std::optional<DicingView> view = dicing_view();
+  const TriangleMeshData triangles = tessellate_nurbs(s, error, view ? &*view : nullptr);
   if (!error.empty()) throw RibError(error);
   add_triangle_mesh(triangles, make_material(loc));
 }

@@ -86,7 +86,7 @@ size_t SceneBuilder::add_triangle_mesh(const TriangleMeshData& object_space, uin
   }
   world.uv = object_space.uv;
   world.indices = object_space.indices;
-  const size_t kept = scene_->surfaces.triangles.add(world);
+  const size_t kept = scene_->surfaces.triangles.add(world, material);
   scene_->surfaces.triangle_material.resize(scene_->surfaces.triangles.size(), material);
   return kept;
 }

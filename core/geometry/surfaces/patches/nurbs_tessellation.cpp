@@ -144,13 +144,13 @@ SurfaceSample evaluate_nurbs(const NurbsSurfaceDescription& s, double u, double 
   return evaluate_in_intervals(s, knot_interval(s.u, u), knot_interval(s.v, v), u, v);
 }
 
-TriangleMeshData tessellate_nurbs(const NurbsSurfaceDescription& s, std::string& error) {
+TriangleMeshData tessellate_nurbs(const NurbsSurfaceDescription& s, std::string& error, const DicingView* view) {
   if (!validate_nurbs(s, error)) return {};
   SpanLayout layout{span_edges(s.u), span_edges(s.v)};
   const std::vector<int> ku = span_intervals(s.u, layout.u_edges), kv = span_intervals(s.v, layout.v_edges);
   return tessellate_spans(layout, [&](int i, int j, double u, double v) {
     return evaluate_in_intervals(s, ku[size_t(i)], kv[size_t(j)], u, v);
-  });
+  }, view);
 }
 
 }  // namespace darc

@@ -41,6 +41,6 @@ SurfaceSample evaluate_nurbs(const NurbsSurfaceDescription& surface, double u, d
 // The triangles of the [min, max] part (parametric_grid.h: spans are the knot intervals, so a
 // vertex lies on every knot line; uv are the request's own parameters). On invalid input returns
 // an empty mesh and sets error.
-TriangleMeshData tessellate_nurbs(const NurbsSurfaceDescription& surface, std::string& error);
+TriangleMeshData tessellate_nurbs(const NurbsSurfaceDescription& surface, std::string& error, const DicingView* view = nullptr);
 
 }  // namespace darc

@@ -63,12 +63,14 @@ struct SpanSegments {
 // The segments span (i, j) needs, from its probes: a chord over parameter step h deviates from the
 // curve by |P''| h^2 / 8, a bilinear cell's diagonal from its surface by |P_uv| h_u h_v / 4, and
 // the normal turns by the probes' turn scaled to the step.
-SpanSegments span_segments(const SpanLayout& layout, const SpanEvaluator& evaluate, int i, int j) {
+SpanSegments span_segments(const SpanLayout& layout, const SpanEvaluator& evaluate, int i, int j,
+                           const DicingView* view) {
   constexpr int K = kProbeIntervals;
   const double u0 = layout.u_edges[size_t(i)], u1 = layout.u_edges[size_t(i) + 1];
   const double v0 = layout.v_edges[size_t(j)], v1 = layout.v_edges[size_t(j) + 1];
   Vec3d P[K + 1][K + 1], N[K + 1][K + 1];
   Vec3d lo{INFINITY, INFINITY, INFINITY}, hi = -lo;
+  double pixel = INFINITY;  // the smallest pixel over the probes (where the span is nearest)
   for (int a = 0; a <= K; ++a)
     for (int b = 0; b <= K; ++b) {
       const double u = a == K ? u1 : u0 + (u1 - u0) * a / K, v = b == K ? v1 : v0 + (v1 - v0) * b / K;
@@ -76,6 +78,7 @@ SpanSegments span_segments(const SpanLayout& layout, const SpanEvaluator& evalua
       N[a][b] = span_normal(layout, evaluate, i, j, u, v);
       lo = min(lo, P[a][b]);
       hi = max(hi, P[a][b]);
+      if (view) pixel = std::min(pixel, view->pixel_size(P[a][b]));
     }
   const double size = length(hi - lo);
   if (!(size > 0) || !std::isfinite(size)) return {};  // a point, or a surface no triangle can show
@@ -92,10 +95,31 @@ SpanSegments span_segments(const SpanLayout& layout, const SpanEvaluator& evalua
     }
   // The probes are K steps apart, so n segments shrink each probe step by K / n. A cell's diagonal
   // turns by up to sqrt(2) times one side's turn where the surface bends both ways (a sphere).
-  const double for_twist = K * std::sqrt(twist / (4 * tolerance));
+  auto for_bend = [&](double bend, double tol) { return K * std::sqrt(bend / (8 * tol)); };
+  auto for_twist = [&](double tol) { return K * std::sqrt(twist / (4 * tol)); };
   const double side_turn = kMaxNormalTurn / std::sqrt(2.0);
-  return {segments_for(std::max({K * std::sqrt(bend_u / (8 * tolerance)), for_twist, K * turn_u / side_turn})),
-          segments_for(std::max({K * std::sqrt(bend_v / (8 * tolerance)), for_twist, K * turn_v / side_turn}))};
+  const double surface_u = std::max({for_bend(bend_u, tolerance), for_twist(tolerance), K * turn_u / side_turn});
+  const double surface_v = std::max({for_bend(bend_v, tolerance), for_twist(tolerance), K * turn_v / side_turn});
+  if (!view || !(pixel > 0) || !std::isfinite(pixel)) return {segments_for(surface_u), segments_for(surface_v)};
+  // On the screen: the deviation in pixels, and the normal rule only down to kMinSegmentPixels.
+  double length_u = 0, length_v = 0;  // the longest probe line each way
+  for (int b = 0; b <= K; ++b) {
+    double lu = 0, lv = 0;
+    for (int a = 0; a < K; ++a) {
+      lu += length(P[a + 1][b] - P[a][b]);
+      lv += length(P[b][a + 1] - P[b][a]);
+    }
+    length_u = std::max(length_u, lu);
+    length_v = std::max(length_v, lv);
+  }
+  // Half the tolerance to each direction's bend: a cell's diagonal sags by the sum of both (a
+  // sphere's triangles would otherwise leave twice the deviation asked for).
+  const double screen_tolerance = 0.5 * kMaxDeviationPixels * pixel, segment = kMinSegmentPixels * pixel;
+  const double screen_u = std::max({for_bend(bend_u, screen_tolerance), for_twist(screen_tolerance),
+                                    std::min(K * turn_u / side_turn, length_u / segment)});
+  const double screen_v = std::max({for_bend(bend_v, screen_tolerance), for_twist(screen_tolerance),
+                                    std::min(K * turn_v / side_turn, length_v / segment)});
+  return {segments_for(std::min(surface_u, screen_u)), segments_for(std::min(surface_v, screen_v))};
 }
 
 size_t grid_vertices(const std::vector<int>& segments, bool closed) {
@@ -192,12 +216,12 @@ bool valid_control_points(const std::vector<HomogeneousPoint>& points, std::stri
   return true;
 }
 
-GridDensity choose_grid_density(const SpanLayout& layout, const SpanEvaluator& evaluate) {
+GridDensity choose_grid_density(const SpanLayout& layout, const SpanEvaluator& evaluate, const DicingView* view) {
   const int spans_u = int(layout.u_edges.size()) - 1, spans_v = int(layout.v_edges.size()) - 1;
   GridDensity d{std::vector<int>(size_t(spans_u), 1), std::vector<int>(size_t(spans_v), 1)};
   for (int j = 0; j < spans_v; ++j)
     for (int i = 0; i < spans_u; ++i) {
-      const SpanSegments s = span_segments(layout, evaluate, i, j);
+      const SpanSegments s = span_segments(layout, evaluate, i, j, view);
       d.u_segments[size_t(i)] = std::max(d.u_segments[size_t(i)], s.u);
       d.v_segments[size_t(j)] = std::max(d.v_segments[size_t(j)], s.v);
     }
@@ -255,8 +279,8 @@ TriangleMeshData triangulate_grid(const SpanLayout& layout, const SpanEvaluator&
   return mesh;
 }
 
-TriangleMeshData tessellate_spans(const SpanLayout& layout, const SpanEvaluator& evaluate) {
-  return triangulate_grid(layout, evaluate, choose_grid_density(layout, evaluate));
+TriangleMeshData tessellate_spans(const SpanLayout& layout, const SpanEvaluator& evaluate, const DicingView* view) {
+  return triangulate_grid(layout, evaluate, choose_grid_density(layout, evaluate, view));
 }
 
 }  // namespace darc

@@ -152,14 +152,15 @@ size_t varying_count(const PatchMeshDescription& mesh, const PatchCounts& c) {
   return size_t(c.nupatches + (mesh.u_periodic ? 0 : 1)) * size_t(c.nvpatches + (mesh.v_periodic ? 0 : 1));
 }
 
-TriangleMeshData tessellate_patch_mesh(const PatchMeshDescription& mesh, std::string& error) {
+TriangleMeshData tessellate_patch_mesh(const PatchMeshDescription& mesh, std::string& error, const DicingView* view) {
   const std::optional<PatchCounts> counts = patch_counts(mesh, error);
   if (!counts || !valid_points(mesh, error)) return {};
   const auto dirs = directions(mesh);
   SpanLayout layout{uniform_edges(counts->nupatches), uniform_edges(counts->nvpatches), mesh.u_periodic,
                     mesh.v_periodic};
   return tessellate_spans(
-      layout, [&](int i, int j, double u, double v) { return evaluate_patch(mesh, dirs, *counts, i, j, u, v); });
+      layout, [&](int i, int j, double u, double v) { return evaluate_patch(mesh, dirs, *counts, i, j, u, v); },
+      view);
 }
 
 }  // namespace darc

@@ -47,6 +47,6 @@ size_t varying_count(const PatchMeshDescription& mesh, const PatchCounts& c);
 // exact derivatives, uv from 0 to 1 over the whole mesh as RI parameterises it). On invalid input
 // (counts, number of points, step, a weight w <= 0 or a non-finite coordinate, a periodic height
 // field) returns an empty mesh and sets error.
-TriangleMeshData tessellate_patch_mesh(const PatchMeshDescription& mesh, std::string& error);
+TriangleMeshData tessellate_patch_mesh(const PatchMeshDescription& mesh, std::string& error, const DicingView* view = nullptr);
 
 }  // namespace darc
