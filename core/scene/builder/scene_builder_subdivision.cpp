@@ -109,7 +109,8 @@ void SceneBuilder::add_subdivision_mesh(const PrimitiveRequest& r, const ParamLi
   std::optional<std::vector<Vec3f>> colours = face_values(params, "Cs", face_count, diag_, loc);
   std::optional<std::vector<Vec3f>> opacities = face_values(params, "Os", face_count, diag_, loc);
   warn_unused_parameters(params, diag_, loc);
-  SubdivisionTessellation t = tessellate_subdivision_mesh(request);
+  const std::optional<DicingView> view = dicing_view();
+  SubdivisionTessellation t = tessellate_subdivision_mesh(request, view ? &*view : nullptr);
   if (!t.ok()) throw RibError(t.error);
   for (const std::string& w : t.warnings) diag_.warning(loc, kRequest, w);
   if (t.mesh.triangle_count() == 0) return;

@@ -120,7 +120,13 @@ int subdivision_levels_for(size_t control_corner_count) {
   return levels;
 }
 
-SubdivisionTessellation tessellate_subdivision_mesh(const SubdivisionMeshRequest& request) {
+int subdivision_levels_on_screen(double longest_edge_pixels, int levels_for_size) {
+  int levels = 1;
+  while (levels < levels_for_size && longest_edge_pixels / double(1 << levels) > kSubdivisionFacetPixels) ++levels;
+  return levels;
+}
+
+SubdivisionTessellation tessellate_subdivision_mesh(const SubdivisionMeshRequest& request, const DicingView* view) {
   SubdivisionTessellation out;
   bool bilinear = request.scheme == "bilinear";
   if (request.scheme == "loop") {
@@ -154,6 +160,21 @@ SubdivisionTessellation tessellate_subdivision_mesh(const SubdivisionMeshRequest
     return out;
   }
   out.levels = subdivision_levels_for(face_vertices.size());
+  if (view) {
+    // The longest control edge in pixels, each measured at the nearer end's pixel size.
+    double longest = 0;
+    size_t first = 0;
+    for (uint32_t n : face_sizes) {
+      for (uint32_t k = 0; k < n; ++k) {
+        const Vec3d a(request.P[face_vertices[first + k]]), b(request.P[face_vertices[first + (k + 1) % n]]);
+        const double pixel = std::min(view->pixel_size(a), view->pixel_size(b));
+        if (pixel > 0 && std::isfinite(pixel)) longest = std::max(longest, length(b - a) / pixel);
+        else longest = INFINITY;  // at the eye: keep the levels the size gives
+      }
+      first += n;
+    }
+    out.levels = subdivision_levels_on_screen(longest, out.levels);
+  }
   for (int i = 0; i < out.levels; ++i) level = refine_catmull_clark(level);
   append_limit_triangles(level, out.mesh, out.triangle_control_face);
   return out;

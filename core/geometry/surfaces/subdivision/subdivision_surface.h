@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "core/geometry/surfaces/dicing_view.h"
 #include "core/geometry/surfaces/triangle_mesh_data.h"
 #include "core/math/vec.h"
 
@@ -65,6 +66,13 @@ struct SubdivisionTessellation {
 // the most, up to kMaxSubdivisionLevels, whose triangles fit kSubdivisionTriangleBudget; at least 1.
 int subdivision_levels_for(size_t control_corner_count);
 
-SubdivisionTessellation tessellate_subdivision_mesh(const SubdivisionMeshRequest& request);
+// With a view, no more levels than bring the longest control edge down to kSubdivisionFacetPixels
+// on the screen (each level halves it): a far or small mesh is not refined into facets far
+// below a pixel. Never more levels than subdivision_levels_for gives; at least 1.
+inline constexpr double kSubdivisionFacetPixels = 1.0;
+int subdivision_levels_on_screen(double longest_edge_pixels, int levels_for_size);
+
+SubdivisionTessellation tessellate_subdivision_mesh(const SubdivisionMeshRequest& request,
+                                                    const DicingView* view = nullptr);
 
 }  // namespace darc

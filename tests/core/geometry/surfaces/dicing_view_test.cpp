@@ -2,7 +2,8 @@
 // the screen with it: a pixel's size against the camera's geometry, perspective and
 // orthographic, through a scaling transform; a NURBS sphere far away gets fewer triangles than
 // the surface rules alone ask, its chords stay within kMaxDeviationPixels of the sphere, and
-// near the eye the screen never asks for more than the surface rules.
+// near the eye the screen never asks for more than the surface rules; a subdivision mesh far
+// away gets fewer levels.
 #include "core/geometry/surfaces/dicing_view.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 
 #include "core/geometry/surfaces/patches/nurbs_tessellation.h"
 #include "core/geometry/surfaces/patches/parametric_grid.h"
+#include "core/geometry/surfaces/subdivision/subdivision_surface.h"
 
 namespace darc {
 namespace {
@@ -101,6 +103,29 @@ TEST(DicingView, NearSphereKeepsTheSurfaceRules) {
   const DicingView near = view_at(1.5, 90, 2000);
   const TriangleMeshData screen = tessellate_nurbs(unit_sphere(), error, &near);
   EXPECT_EQ(screen.triangle_count(), surface.triangle_count());
+}
+
+TEST(DicingView, SubdivisionLevelsBringTheLongestEdgeToAPixel) {
+  EXPECT_EQ(subdivision_levels_on_screen(100, 4), 4);  // 100 / 16 is still over a pixel
+  EXPECT_EQ(subdivision_levels_on_screen(3, 4), 2);    // 3 / 4 is under one
+  EXPECT_EQ(subdivision_levels_on_screen(0.5, 4), 1);  // at least one level
+  EXPECT_EQ(subdivision_levels_on_screen(INFINITY, 3), 3);
+  // A unit cube: 4 levels by its size; 200 units away at fov 40 on 100 pixels its edges are
+  // 0.7 pixel, so one level; 3 units away, 20 pixels, all four.
+  SubdivisionMeshRequest cube;
+  cube.scheme = "catmull-clark";
+  cube.P = {{-0.5f, -0.5f, -0.5f}, {0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, -0.5f}, {-0.5f, 0.5f, -0.5f},
+            {-0.5f, -0.5f, 0.5f},  {0.5f, -0.5f, 0.5f},  {0.5f, 0.5f, 0.5f},  {-0.5f, 0.5f, 0.5f}};
+  cube.nvertices = {4, 4, 4, 4, 4, 4};
+  cube.vertices = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 2, 3, 7, 6, 1, 2, 6, 5, 3, 0, 4, 7};
+  const SubdivisionTessellation alone = tessellate_subdivision_mesh(cube);
+  ASSERT_TRUE(alone.ok()) << alone.error;
+  EXPECT_EQ(alone.levels, 4);
+  const DicingView far = view_at(200, 40), near = view_at(3, 40);
+  const SubdivisionTessellation small = tessellate_subdivision_mesh(cube, &far);
+  EXPECT_EQ(small.levels, 1);
+  EXPECT_LT(small.mesh.triangle_count() * 16, alone.mesh.triangle_count());
+  EXPECT_EQ(tessellate_subdivision_mesh(cube, &near).levels, 4);
 }
 
 }  // namespace
