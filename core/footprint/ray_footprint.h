@@ -34,6 +34,10 @@ struct ReachBound {
   float at(float t) const { return a + b * std::abs(t - apex_t); }
   // The largest reach over [t0, t1] (t0 <= t1): at one of the ends, the V being convex.
   float max_over(float t0, float t1) const { return std::max(at(t0), at(t1)); }
+  // Whether the reach only grows for t >= 0 (apex at or before the origin: every camera ray),
+  // so that the largest over [t0, t1] is at(t1) and the smallest at(t0): hot culls then need
+  // only one end of a depth range.
+  bool grows() const { return apex_t <= 0.0f; }
 };
 
 struct RayFootprint {

@@ -51,10 +51,7 @@ struct DistanceState {
   bool oriented;
   Vec3f normal0, normal1, dir;
   ReachBound reach;  // the footprint's reach at ray parameter t
-  // Whether the reach only grows along the ray (apex at or before the origin: every camera
-  // ray), so that a depth range's largest reach is at its far end: the hot culls then skip the
-  // near end (the same value, fewer instructions).
-  bool reach_grows = true;
+  bool reach_grows = true;  // reach.grows(): a depth range's largest reach is at its far end
   // Best fragment so far, and the geometry its coverage mask needs.
   bool found = false;
   float coverage = 0, t = 0, u = 0, distance = 0;
@@ -415,7 +412,7 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   float z_hi = std::max(std::max(z[0], z[1]), std::max(z[2], z[3]));
   float z_lo = std::min(std::min(z[0], z[1]), std::min(z[2], z[3]));
   const float t_far = std::max(0.0f, (z_hi + hw) / ray.ray_length);
-  const float reach_far = ray.reach.apex_t <= 0.0f  // grows along the ray: largest at the far end
+  const float reach_far = ray.reach.grows()
                               ? ray.reach.at(t_far)
                               : ray.reach.max_over(std::max(0.0f, (z_lo - hw) / ray.ray_length), t_far);
   const float margin = hw + reach_far;
@@ -449,7 +446,7 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   }
   s.dir = ray.dir;
   s.reach = ray.reach;
-  s.reach_grows = ray.reach.apex_t <= 0.0f;
+  s.reach_grows = ray.reach.grows();
 
   EndFalloff fall;
   float min_tangent = kEndOnTangentFraction * 2.0f * hw;
