@@ -2,6 +2,7 @@
 
 #include "core/footprint/footprint_frame.h"
 #include "core/footprint/polygon_coverage.h"
+#include "core/footprint/sphere_coverage.h"
 #include "core/math/curve_basis.h"
 #include "core/scene/interaction.h"
 #include "core/geometry/points/point_set_coverage.h"
@@ -88,6 +89,45 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
       frame_state = FootprintFrame::make(ray, footprint, frame) ? FrameState::Made : FrameState::None;
     return frame_state == FrameState::Made ? &frame : nullptr;
   };
+  // Adds the fragment of the whole sphere `local` (primitive p) whose analytic coverage is h,
+  // shaded where the sub-ray (h.u, h.v) meets it (or passes it closest, for a sliver between
+  // the sub-rays). False, adding nothing, when its near side is hidden (Sides 1 seen from
+  // inside out): the sub-ray tests then find what is visible.
+  auto add_ball_fragment = [&](const SphereFootprintHit& h, uint32_t p, uint32_t local, const Material& m,
+                               const Vec3f& opacity) {
+    const Ray sub = footprint_sub_ray_at(ray, footprint, h.u, h.v);
+    SurfaceHit sh;
+    float t;
+    if (scene.surfaces.intersect(local, sub, sh)) {
+      t = sh.t;
+    } else {
+      Vec3d centre;
+      double radius;
+      scene.surfaces.whole_ball(local, centre, radius);
+      const Vec3d d(sub.d);
+      t = float(dot(centre - Vec3d(sub.o), d) / dot(d, d));
+    }
+    const Vec3f normal = scene.surfaces.geometric_normal(local, sub.at(t));
+    if (m.hides_back_of(normal, sub.d)) return false;
+    ++counters.surface_pieces;
+    counters.shadow_surface_pieces += filter.shadow;
+    Fragment f = fragment(t, h.coverage, p, ctx.settings.coverage_masks ? h.mask : kFullMask);
+    f.at_sub_ray = true;
+    f.sub_u = h.u;
+    f.sub_v = h.v;
+    f.t_near = h.t_near;
+    f.t_far = h.t_far;
+    f.normal = normal;
+    f.covers_centre = h.covers_centre;
+    const Fragment* held = abuffer.add(f, shade);
+    nearest = std::min(nearest, t);
+    // Nothing behind an opaque ball that covers the whole footprint can be seen.
+    if (held && held->coverage >= 1.0f && held->mask == kFullMask && opacity == Vec3f{1, 1, 1}) {
+      ray.tmax = std::min(ray.tmax, held->t_far);
+      distance_ray.t_max = ray.tmax;
+    }
+    return true;
+  };
   auto visit = [&](uint32_t p) {
       uint32_t local;
       const Scene::PrimKind kind = scene.prim_kind(p, local);
@@ -150,6 +190,23 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
                 distance_ray.t_max = ray.tmax;
               }
               return;
+            }
+          }
+          // Whole spheres: what their silhouette covers of the footprint, analytically (a sphere
+          // smaller than the footprint, between its sub-rays, is not missed).
+          Vec3d ball_centre;
+          double ball_radius;
+          if (tmin == 0.0f && scene.surfaces.whole_ball(local, ball_centre, ball_radius)) {
+            if (const FootprintFrame* fr = analytic_frame()) {
+              frame.t_max = ray.tmax;
+              SphereFootprintHit h;
+              const SphereCoverage result = sphere_coverage(*fr, ball_centre, ball_radius, h);
+              if (result == SphereCoverage::Miss) {
+                ++counters.surface_pieces;
+                counters.shadow_surface_pieces += filter.shadow;
+                return;
+              }
+              if (result == SphereCoverage::Covered && add_ball_fragment(h, p, local, m, opacity)) return;
             }
           }
           // A visible hit of this surface by `r` (Sides 1 surfaces seen from behind are not).

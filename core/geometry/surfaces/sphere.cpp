@@ -104,6 +104,23 @@ bool Sphere::intersect(const Ray& ray, SurfaceHit& hit) const {
   return false;
 }
 
+bool Sphere::whole_ball(Vec3d& centre, double& world_radius) const {
+  if (degenerate || std::abs(thetamax) < kTwoPi || zmin > -radius || zmax < radius) return false;
+  const auto& m = object_to_world.m;
+  if (m[0][3] != 0 || m[1][3] != 0 || m[2][3] != 0 || m[3][3] != 1) return false;  // projective
+  // The rows are the images of the axes: equal lengths, perpendicular (to rounding).
+  const Vec3d x{m[0][0], m[0][1], m[0][2]}, y{m[1][0], m[1][1], m[1][2]}, z{m[2][0], m[2][1], m[2][2]};
+  const double xx = dot(x, x), yy = dot(y, y), zz = dot(z, z);
+  constexpr double kSimilarity = 1e-9;
+  const double tolerance = kSimilarity * xx;
+  if (!(xx > 0) || std::abs(yy - xx) > tolerance || std::abs(zz - xx) > tolerance || std::abs(dot(x, y)) > tolerance ||
+      std::abs(dot(y, z)) > tolerance || std::abs(dot(x, z)) > tolerance)
+    return false;
+  centre = Vec3d{m[3][0], m[3][1], m[3][2]};
+  world_radius = radius * std::sqrt(xx);
+  return std::isfinite(world_radius) && std::isfinite(centre.x) && std::isfinite(centre.y) && std::isfinite(centre.z);
+}
+
 Vec3f Sphere::normal_at(const Vec3f& p_world) const {
   Vec3d p = world_to_object.transform_point(Vec3d(p_world));
   Vec3d n = normalize(world_to_object.transform_normal_by_inverse(p));

@@ -34,6 +34,11 @@ struct Sphere {
   // Nearest hit with t in the open interval (ray.tmin, ray.tmax), or false.
   bool intersect(const Ray& ray, SurfaceHit& hit) const;
 
+  // True for a whole sphere (no clipping in z or theta) placed by a similarity (rotation,
+  // uniform scale, translation): it is then the ball of `radius` around `centre` in the world,
+  // whose silhouette footprint coverage takes analytically (core/footprint/sphere_coverage.h).
+  bool whole_ball(Vec3d& centre, double& world_radius) const;
+
   // The unit geometric normal (as intersect's hit.ng) at the sphere point nearest the world
   // point p (p need not lie exactly on the sphere).
   Vec3f normal_at(const Vec3f& p_world) const;

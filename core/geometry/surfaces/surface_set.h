@@ -82,6 +82,12 @@ struct SurfaceSet {
   // The outline of `surface` when it is planar and convex (every triangle; a polygon of one
   // convex loop with at most kMaxPolygonCorners corners); false for everything else.
   bool convex_outline(uint32_t surface, ConvexOutline& out) const;
+  // The ball `surface` is, when it is a whole sphere placed by a similarity (Sphere::whole_ball);
+  // false for everything else.
+  bool whole_ball(uint32_t surface, Vec3d& centre, double& radius) const {
+    uint32_t i;
+    return locate(surface, i) == Kind::Sphere && spheres[i].whole_ball(centre, radius);
+  }
   // The layer `surface` is a piece of (its material, as the scene builder gives it: the patches
   // of one surface, each its own request, meet without a seam); kNoLayer for a surface on its own.
   uint32_t layer(uint32_t surface) const;
