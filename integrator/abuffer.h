@@ -23,10 +23,10 @@ struct Fragment {
   uint32_t strand = kNoStrand;  // curve strand id; kNoStrand for surfaces
   uint32_t primitive = 0;    // grid primitive index (what to shade)
   float u = 0;               // along the curve segment (curves only)
-  // Set when two fragments were merged because the list was full: colour and opacity are
-  // then already shaded and weighted by coverage.
+  // Set when two fragments were merged because the list was full: their light and opacity
+  // are then already shaded, per footprint point, in the A-buffer's merged record `merged`.
   bool preshaded = false;
-  Vec3f color, opacity;
+  int merged = -1;
   // Where in the footprint the fragment lies (8 x 8 points); the scalar coverage says how much.
   CoverageMask mask = kFullMask;
   // Surfaces: the footprint point whose sub-ray hit is shaded (-1: the ray itself).
@@ -75,6 +75,16 @@ struct ShadedFragment {
   Vec3f Oi;
 };
 
+// What fragments merged because the list was full leave at each footprint point: light
+// (premultiplied) and opacity, composited front to back point by point. Kept per point, not as
+// one scalar: the fragments of a dense clump overlap in a small part of the footprint, and
+// merging their scalar coverages as if they were independent fills all of it (hundreds of
+// strands of a few percent each, seen grazing at a head's silhouette, made alpha 0.99 where
+// they cover 0.3).
+struct MergedPoints {
+  std::array<Vec3f, kMaskSide * kMaskSide> Ci, Oi;
+};
+
 // Longest A-buffer list: beyond it the two farthest fragments are merged into one (composited
 // with each other in depth order), which bounds memory per ray (curve-ray-tracing.md §6 case 9).
 inline constexpr size_t kMaxFragments = 64;
@@ -110,6 +120,8 @@ class ABuffer {
     added_ = 0;
     merges_ = 0;
     sites_.clear();
+    merged_used_ = 0;
+    free_count_ = 0;
   }
 
   // Adds a fragment. Each curve segment is a piece of its strand, cut at its own ends, so the
@@ -169,6 +181,8 @@ class ABuffer {
         composite_equal_depth(first, last, shade);
       first = last;
     }
+    for (size_t i = 0; i < n; ++i)
+      if (pending_[i].preshaded) free_merged_[size_t(free_count_++)] = pending_[i].merged;
     pending_.erase(pending_.begin(), pending_.begin() + long(n));
     nearest_pending_ = pending_.empty() ? std::numeric_limits<float>::infinity() : pending_.front().t;
     return n;
@@ -180,12 +194,10 @@ class ABuffer {
   // (transmittance only falls). The contribution weight of the rays f's shading casts.
   float visibility_weight(const Fragment& f) const {
     if (f.preshaded) return 1.0f;
-    const float k = float(mask_count(f.mask)), c = std::clamp(f.coverage, 0.0f, 1.0f) * kPoints;
-    const float in_mask = k > 0 ? std::min(1.0f, c / k) : 0.0f;
-    const float out_mask = k < kPoints ? std::max(0.0f, (c - k * in_mask) / (kPoints - k)) : 0.0f;
+    const CoverageSpread spread = spread_coverage(f.mask, f.coverage);
     float sum = 0;
     for (int b = 0; b < kPoints; ++b) {
-      float o = (f.mask >> b) & 1 ? in_mask : out_mask;
+      float o = spread.at(b);
       if (o != 0.0f) sum += o * max_component(point_transmittance_[b]);
     }
     return sum * (1.0f / kPoints);
@@ -353,33 +365,34 @@ class ABuffer {
     return i;
   }
 
-  template <class Shade>
-  ShadedFragment weighted(const Fragment& f, Shade& shade) const {
-    if (f.preshaded) return {f.color, f.opacity};
-    ShadedFragment s = shade_fragment(f, shade);
-    return {s.Ci * f.coverage, s.Oi * f.coverage};
-  }
-
-  // A shaded fragment and its opacity per footprint point: in_mask on its mask's points,
-  // out_mask on the others.
+  // A shaded fragment and its opacity per footprint point (spread_coverage); or, for merged
+  // fragments, light and opacity per point.
   struct Layer {
     ShadedFragment s;
-    CoverageMask mask = kFullMask;
-    float in_mask = 1, out_mask = 1;
-    float at(int b) const { return (mask >> b) & 1 ? in_mask : out_mask; }
+    CoverageSpread spread{kFullMask, 0, 1.0f, 0.0f};
+    const MergedPoints* points = nullptr;
+    float at(int b) const { return spread.at(b); }
+    // Light and opacity at point b, weighted by the point's coverage.
+    void at(int b, Vec3f& Ci, Vec3f& Oi) const {
+      if (points) {
+        Ci = points->Ci[size_t(b)];
+        Oi = points->Oi[size_t(b)];
+      } else {
+        const float o = at(b);
+        Ci = s.Ci * o;
+        Oi = s.Oi * o;
+      }
+    }
   };
 
   template <class Shade>
   Layer layer_of(const Fragment& f, Shade& shade) const {
     Layer l;
     if (f.preshaded) {
-      l.s = {f.color, f.opacity};
+      l.points = &merged_[size_t(f.merged)];
     } else {
       l.s = shade_fragment(f, shade);
-      l.mask = f.mask;
-      const float k = float(mask_count(l.mask)), c = std::clamp(f.coverage, 0.0f, 1.0f) * kPoints;
-      l.in_mask = k > 0 ? std::min(1.0f, c / k) : 0.0f;
-      l.out_mask = k < kPoints ? std::max(0.0f, (c - k * l.in_mask) / (kPoints - k)) : 0.0f;
+      l.spread = spread_coverage(f.mask, f.coverage);
     }
     return l;
   }
@@ -408,15 +421,21 @@ class ABuffer {
   }
 
   // Composites per footprint point: the fragment's coverage c is spread over its mask's k points
-  // (opacity c*64/k each, at most 1; any excess over the other points), so one fragment alone
-  // gives exactly c, while fragments in the same part of the footprint occlude each other and
-  // abutting ones add up (curve-ray-tracing.md §6 case 8). With full masks this is the scalar
-  // composite of the seed paper.
+  // (opacity c*64/k each, at most 1; any excess on the points around them, spread_coverage), so
+  // one fragment alone gives exactly c, while fragments in the same part of the footprint
+  // occlude each other and abutting ones add up (curve-ray-tracing.md §6 case 8). With full masks
+  // this is the scalar composite of the seed paper.
   template <class Shade>
   void composite(const Fragment& f, Shade& shade) {
     const Layer l = layer_of(f, shade);
     Vec3f sum, lost;
-    for (int b = 0; b < kPoints; ++b) {
+    if (l.points) {
+      for (int b = 0; b < kPoints; ++b) {
+        const Vec3f &Ci = l.points->Ci[size_t(b)], &Oi = l.points->Oi[size_t(b)];
+        if (Oi != Vec3f{} || Ci != Vec3f{}) composite_point(b, Ci, Oi, 1.0f, sum, lost);
+      }
+    }
+    for (int b = 0; b < kPoints && !l.points; ++b) {
       float o = l.at(b);
       if (o != 0.0f) composite_point(b, l.s.Ci, l.s.Oi, o, sum, lost);
     }
@@ -438,22 +457,22 @@ class ABuffer {
     Vec3f sum, lost;
     for (int b = 0; b < kPoints; ++b) {
       int present = 0;
-      const Layer* only = nullptr;
-      float only_o = 0;
+      Vec3f only_Ci, only_Oi;
       Vec3f light, opacity_sum, clear = one;
       for (const Layer& l : layers) {
-        float o = l.at(b);
-        if (o == 0.0f) continue;
+        Vec3f Ci, Oi;
+        l.at(b, Ci, Oi);
+        if (Ci == Vec3f{} && Oi == Vec3f{}) continue;
         ++present;
-        only = &l;
-        only_o = o;
-        light += l.s.Ci * o;
-        opacity_sum += l.s.Oi * o;
-        clear = mul(clear, one - l.s.Oi * o);
+        only_Ci = Ci;
+        only_Oi = Oi;
+        light += Ci;
+        opacity_sum += Oi;
+        clear = mul(clear, one - Oi);
       }
       if (present == 0) continue;
       if (present == 1) {
-        composite_point(b, only->s.Ci, only->s.Oi, only_o, sum, lost);
+        composite_point(b, only_Ci, only_Oi, 1.0f, sum, lost);
         continue;
       }
       const Vec3f opacity = one - clear;
@@ -490,10 +509,29 @@ class ABuffer {
     if (near_i == n - 1) near_i = far_i;
     pending_.pop_back();
     Fragment& near = pending_[near_i];
-    ShadedFragment a = weighted(near, shade), b = weighted(far, shade);
+    // The pair composited point by point into a record of its own (reusing one of theirs).
+    const int into = near.preshaded ? near.merged : far.preshaded ? far.merged : new_merged();
+    const Layer a = layer_of(near, shade), b = layer_of(far, shade);
+    MergedPoints& m = merged_[size_t(into)];
+    const Vec3f one{1, 1, 1};
+    for (int p = 0; p < kPoints; ++p) {
+      Vec3f a_Ci, a_Oi, b_Ci, b_Oi;
+      a.at(p, a_Ci, a_Oi);
+      b.at(p, b_Ci, b_Oi);
+      m.Ci[size_t(p)] = a_Ci + mul(one - a_Oi, b_Ci);
+      m.Oi[size_t(p)] = one - mul(one - a_Oi, one - b_Oi);
+    }
+    if (near.preshaded && far.preshaded) free_merged_[size_t(free_count_++)] = far.merged;
     near.preshaded = true;
-    near.color = a.Ci + mul(Vec3f{1, 1, 1} - a.Oi, b.Ci);
-    near.opacity = Vec3f{1, 1, 1} - mul(Vec3f{1, 1, 1} - a.Oi, Vec3f{1, 1, 1} - b.Oi);
+    near.merged = into;
+    near.sites = -1;
+  }
+
+  // A merged record to write: a freed one, or a new one (records stay allocated between rays).
+  int new_merged() {
+    if (free_count_ > 0) return free_merged_[--free_count_];
+    if (merged_used_ == merged_.size()) merged_.emplace_back();
+    return int(merged_used_++);
   }
 
   std::vector<Fragment> pending_;
@@ -511,6 +549,12 @@ class ABuffer {
   size_t added_ = 0;
   size_t merges_ = 0;
   std::vector<ShadingSites> sites_;  // of the layer fragments with pieces facing apart
+  // Merged records: merged_[0, merged_used_) belong to this ray, of which free_merged_[0,
+  // free_count_) are free again (a pair of merged fragments keeps one record).
+  std::vector<MergedPoints> merged_;
+  size_t merged_used_ = 0;
+  std::array<int, kMaxFragments + 1> free_merged_{};
+  int free_count_ = 0;
 };
 
 }  // namespace darc

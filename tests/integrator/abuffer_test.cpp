@@ -188,6 +188,51 @@ TEST(ABuffer, CapMergeInArbitraryOrderStaysClose) {
   expect_near(ab.color(), expected.color, 0.05f);
 }
 
+// A dense clump seen grazing (hair at a head's silhouette): hundreds of strands, far more than
+// the list holds, all over the same few points of the footprint. Merging them as scalar
+// coverages treats them as independent and fills the footprint (1 - (1 - c)^n); merged point by
+// point they cover what their masks cover, in any insertion order.
+TEST(ABuffer, CapMergeKeepsWhereTheFragmentsLie) {
+  const CoverageMask corner = 0x0303;  // four points in a corner
+  auto white = [](const Fragment&) { return ShadedFragment{Vec3f{1, 1, 1}, Vec3f{1, 1, 1}}; };
+  std::mt19937 rng(11);
+  std::vector<Fragment> fragments;
+  for (int i = 0; i < int(kMaxFragments) * 5; ++i) {
+    Fragment f = strand_fragment(uint32_t(i), 1.0f + 0.01f * float(i), 2.0f / 64.0f);
+    f.mask = corner;
+    fragments.push_back(f);
+  }
+  for (int trial = 0; trial < 3; ++trial) {
+    if (trial == 2) std::shuffle(fragments.begin(), fragments.end(), rng);
+    if (trial == 1) std::reverse(fragments.begin(), fragments.end());
+    ABuffer ab;
+    for (const Fragment& f : fragments) ab.add(f, white);
+    ASSERT_GT(ab.fragments_merged(), 0u);
+    ab.composite_until(1e9f, white);
+    // Each point of the corner is behind 320 layers of opacity 0.5: closed; the rest is clear.
+    expect_near(ab.transmittance(), Vec3f{60.0f, 60.0f, 60.0f} / 64.0f, 1e-5f);
+    expect_near(ab.color(), Vec3f{4.0f, 4.0f, 4.0f} / 64.0f, 1e-5f);
+  }
+}
+
+// Fragments whose coverage is larger than their mask holds (a mask rounds its count): the excess
+// stays around the mask. Spread over the whole footprint, a few hundred such fragments of a
+// clump fill it.
+TEST(ABuffer, CoverageBeyondTheMaskStaysNearIt) {
+  const CoverageMask corner = 1;  // the first point
+  auto white = [](const Fragment&) { return ShadedFragment{Vec3f{1, 1, 1}, Vec3f{1, 1, 1}}; };
+  ABuffer ab;
+  for (int i = 0; i < 200; ++i) {
+    Fragment f = strand_fragment(uint32_t(i), 1.0f + 0.01f * float(i), 1.4f / 64.0f);
+    f.mask = corner;
+    ab.add(f, white);
+    ab.composite_until(1e9f, white);
+  }
+  // The corner point and its three neighbours at most.
+  EXPECT_GE(ab.transmittance().x, 60.0f / 64.0f - 1e-5f);
+  EXPECT_LT(ab.transmittance().x, 63.0f / 64.0f);
+}
+
 TEST(ABuffer, EqualCoveragePiecesShadeTheOneNearestTheRay) {
   // Two pieces of one strand that both cover the whole footprint: the shading point is the
   // piece passing nearer the ray centre, whichever came first.

@@ -47,5 +47,51 @@ TEST(CoverageMask, HalfPlaneKeepsTheStrandSide) {
   EXPECT_FALSE(m & 1);
 }
 
+TEST(CoverageMask, DilateAddsTheEightNeighboursWithoutWrapping) {
+  EXPECT_EQ(dilate_mask(CoverageMask{1} << (3 * kMaskSide + 3)), CoverageMask{0x1c1c1c} << (2 * kMaskSide));
+  // A point on the last column of a row grows to its row's columns 6 and 7, never to the next
+  // row's column 0; the corner point keeps to its corner.
+  const CoverageMask edge = dilate_mask(CoverageMask{1} << (2 * kMaskSide + 7));
+  EXPECT_EQ(mask_count(edge), 6);
+  EXPECT_FALSE(edge >> (3 * kMaskSide) & 1);
+  EXPECT_EQ(dilate_mask(1), CoverageMask{0x303});
+  EXPECT_EQ(dilate_mask(kFullMask), kFullMask);
+}
+
+float spread_total(const CoverageSpread& s) {
+  float sum = 0;
+  for (int b = 0; b < 64; ++b) sum += s.at(b);
+  return sum / 64.0f;
+}
+
+TEST(CoverageMask, SpreadKeepsTheCoverageWithinTheMaskWhenItFits) {
+  const CoverageMask m = 0xf0;  // four points
+  const CoverageSpread s = spread_coverage(m, 3.0f / 64.0f);
+  EXPECT_EQ(s.full, m);
+  EXPECT_EQ(s.ring, 0u);
+  EXPECT_FLOAT_EQ(s.full_opacity, 0.75f);
+  EXPECT_NEAR(spread_total(s), 3.0f / 64.0f, 1e-7f);
+}
+
+TEST(CoverageMask, SpreadPutsTheExcessOnTheNeighboursOnly) {
+  // One point in the middle holding 1.5 points' worth: the half goes to its eight neighbours,
+  // the rest of the footprint stays clear.
+  const CoverageMask centre = CoverageMask{1} << (4 * kMaskSide + 4);
+  const CoverageSpread s = spread_coverage(centre, 1.5f / 64.0f);
+  EXPECT_FLOAT_EQ(s.full_opacity, 1.0f);
+  EXPECT_EQ(s.ring, dilate_mask(centre) & ~centre);
+  EXPECT_FLOAT_EQ(s.ring_opacity, 0.5f / 8.0f);
+  EXPECT_NEAR(spread_total(s), 1.5f / 64.0f, 1e-7f);
+  EXPECT_EQ(s.at(0), 0.0f);
+  // More than the first ring holds: it fills, and the next ring takes the rest.
+  const CoverageSpread wide = spread_coverage(centre, 12.0f / 64.0f);
+  EXPECT_EQ(wide.full, dilate_mask(centre));
+  EXPECT_EQ(wide.ring, dilate_mask(dilate_mask(centre)) & ~dilate_mask(centre));
+  EXPECT_NEAR(spread_total(wide), 12.0f / 64.0f, 1e-6f);
+  // An empty mask says nowhere in particular: the coverage is spread over the whole footprint.
+  EXPECT_NEAR(spread_coverage(0, 0.25f).at(17), 0.25f, 1e-7f);
+  EXPECT_NEAR(spread_total(spread_coverage(kFullMask, 1.0f)), 1.0f, 1e-7f);
+}
+
 }  // namespace
 }  // namespace darc
