@@ -188,6 +188,34 @@ class ABuffer {
     return n;
   }
 
+  // For rays that want transmittance only (shadow rays): composites every pending fragment now,
+  // in whatever order, but the pieces of surface layers not yet final (t > t_final: more pieces
+  // of their mesh may still come and must be summed with them first). Transmittance is a product
+  // over the fragments per footprint point, so depth order does not change it, and a ray through
+  // dense hair learns at once that it is blocked, instead of when the walk has passed the
+  // fragments (a wide footprint's walk lags far behind them). A later piece of a strand composited
+  // here is composited on its own, as after composite_until. Colour is not meaningful after this.
+  // Returns how many were composited.
+  template <class Shade>
+  size_t composite_for_transmittance(float t_final, Shade&& shade) {
+    size_t kept = 0, n = 0;
+    for (size_t i = 0; i < pending_.size(); ++i) {
+      Fragment& f = pending_[i];
+      if (f.layer != kNoLayer && f.t > t_final) {
+        if (kept != i) pending_[kept] = f;
+        ++kept;
+        continue;
+      }
+      composite(f, shade);
+      if (f.preshaded) free_merged_[size_t(free_count_++)] = f.merged;
+      ++n;
+    }
+    pending_.resize(kept);
+    nearest_pending_ = std::numeric_limits<float>::infinity();
+    for (const Fragment& f : pending_) nearest_pending_ = std::min(nearest_pending_, f.t);
+    return n;
+  }
+
   // How much of the sample fragment f's light can still reach: its opacity per footprint point
   // (as compositing spreads its coverage over its mask) times the transmittance in front of that
   // point, averaged over the footprint. Exact while f is being composited; an upper bound before

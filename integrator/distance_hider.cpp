@@ -252,9 +252,20 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
 
   int steps_to_sort = ctx.settings.sort_interval;  // a countdown: no division per step
   bool terminated = false;
+  // Shadow rays want transmittance alone: what is pending is composited at every step, in any
+  // order (ABuffer::composite_for_transmittance), so they stop as soon as they are blocked.
+  const bool transmittance_only = filter.shadow;
   auto progress = [&](float t_final) {
     if (--steps_to_sort > 0 && t_final < ray.tmax) return true;
     if (steps_to_sort <= 0) steps_to_sort = ctx.settings.sort_interval;
+    if (transmittance_only) {
+      if (abuffer.composite_for_transmittance(t_final, shade) > 0 &&
+          max_component(abuffer.transmittance()) < min_transmittance) {
+        terminated = true;
+        return false;
+      }
+      return t_final < ray.tmax;
+    }
     // Nothing pending is final yet: compositing would do nothing.
     if (t_final < abuffer.nearest_pending() && t_final < ray.tmax) return true;
     if (abuffer.composite_until(t_final, shade) > 0 &&

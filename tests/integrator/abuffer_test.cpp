@@ -233,6 +233,39 @@ TEST(ABuffer, CoverageBeyondTheMaskStaysNearIt) {
   EXPECT_LT(ab.transmittance().x, 63.0f / 64.0f);
 }
 
+// Shadow rays composite whatever they hold at every step: transmittance is a product, so it
+// matches compositing in depth order; pieces of a surface layer not yet final wait (more pieces
+// of their mesh may come and must be summed with them first).
+TEST(ABuffer, TransmittanceIsTheSameInAnyOrder) {
+  std::mt19937 rng(17);
+  std::vector<Fragment> fragments = distinct_strands(int(kMaxFragments) / 2, rng);
+  for (size_t i = 0; i < fragments.size(); ++i) fragments[i].mask = CoverageMask{0xff} << (8 * (i % 8));
+  auto grey = [](const Fragment& f) {
+    const float o = 0.2f + 0.1f * float(f.primitive % 7);
+    return ShadedFragment{Vec3f{}, Vec3f{o, o, o}};
+  };
+  ABuffer ordered;
+  for (const Fragment& f : fragments) ordered.add(f, grey);
+  ordered.composite_until(1e9f, grey);
+  ABuffer any_order;
+  for (size_t i = 0; i < fragments.size(); ++i) {
+    any_order.add(fragments[i], grey);
+    if (i % 5 == 4) any_order.composite_for_transmittance(0.0f, grey);
+  }
+  any_order.composite_for_transmittance(1e9f, grey);
+  expect_near(any_order.transmittance(), ordered.transmittance(), 1e-5f);
+  // A layer piece beyond t_final stays pending until it is final.
+  ABuffer layered;
+  Fragment piece;
+  piece.t = 5.0f;
+  piece.coverage = 0.5f;
+  piece.layer = 3;
+  piece.t_near = piece.t_far = 5.0f;
+  layered.add(piece, grey);
+  EXPECT_EQ(layered.composite_for_transmittance(4.0f, grey), 0u);
+  EXPECT_EQ(layered.composite_for_transmittance(6.0f, grey), 1u);
+}
+
 TEST(ABuffer, EqualCoveragePiecesShadeTheOneNearestTheRay) {
   // Two pieces of one strand that both cover the whole footprint: the shading point is the
   // piece passing nearer the ray centre, whichever came first.

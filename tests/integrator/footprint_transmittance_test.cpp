@@ -63,6 +63,39 @@ TEST(FootprintTransmittance, StrandsStackedInDepthOccludeTheSamePoints) {
   }
 }
 
+// A shadow ray through dense hair must stop once it is blocked. Strands that run almost along
+// the ray have boxes spanning every depth, so a walk that composites only what it has passed in
+// depth (as camera rays must, for colour) learns nothing until it has visited every strand;
+// transmittance is a product, so the shadow ray composites what it holds at every step instead.
+TEST(FootprintTransmittance, ShadowRayStopsOnceBlockedWhateverTheDepthOrder) {
+  const int n = 200;
+  std::string world = "Opacity [0.5 0.5 0.5]\n";
+  for (int i = 0; i < n; ++i) {
+    // Crosses the ray (x = 0) at z = 501 + i, covering the whole footprint (width 2).
+    std::ostringstream s;
+    s << "Curves \"linear\" [2] \"nonperiodic\" \"P\" [-5 0 " << 1 + i << "  5 0 " << 1001 + i
+      << "] \"constantwidth\" [2]\n";
+    world += s.str();
+  }
+  const Scene scene = build_scene(world);
+  Diagnostics diag([](const Diagnostic&) {});
+  SceneShading shading(scene, diag);
+  Tracer tracer(scene);
+  HiderContext base{scene, shading, tracer, 0, 1, 1};
+  DistanceContext ctx = make_distance_context(base, {});
+  RayFootprint fp;
+  fp.dox = Vec3f{1, 0, 0};
+  fp.doy = Vec3f{0, 1, 0};
+  Ray ray{{0, 0, -1}, {0, 0, 1}};
+  RayCounters counters;
+  RayScratchStack scratch(scene.accel);
+  const Vec3f t = trace_footprint_transmittance(ctx, ray, fp, counters, scratch.at(0), kNoStrand);
+  EXPECT_LT(max_component(t), kDistanceMinTransmittance);
+  EXPECT_EQ(counters.rays_terminated_early, 1u);
+  // Ten strands of opacity 0.5 leave 1e-3; the walk tests them in batches of a few leaves.
+  EXPECT_LT(counters.segment_tests, uint64_t(n / 4)) << "the walk went on through the blocked hair";
+}
+
 TEST(FootprintTransmittance, StrandsSideBySideAddUp) {
   // Four strands of width 0.25 tiling the footprint, each at its own depth: 1 - 4 * c * o.
   const float c = 0.25f, o = 0.4f;
