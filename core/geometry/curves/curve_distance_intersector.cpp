@@ -326,7 +326,7 @@ CoverageMask fragment_mask(const DistanceState& s, const EndFalloff& ends, float
     CoverageMask allowed = kFullMask;
     if (p.cut_start) allowed &= start_side;
     if (p.cut_end) allowed &= end_side;
-    int count = std::max(1, int(std::lround(p.coverage * kPoints)));
+    int count = mask_points_for(p.coverage);
     CoverageMask m = nearest_points_mask(sq, p.px, p.py, -p.ty, p.tx, p.end_on, count, allowed);
     int k = mask_count(m);
     total += k > 0 ? p.coverage * float(mask_count(m & ~all)) / float(k) : p.coverage;

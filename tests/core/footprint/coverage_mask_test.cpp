@@ -47,6 +47,15 @@ TEST(CoverageMask, HalfPlaneKeepsTheStrandSide) {
   EXPECT_FALSE(m & 1);
 }
 
+TEST(CoverageMask, AMaskHoldsItsCoverage) {
+  EXPECT_EQ(mask_points_for(5.2f / 64.0f), 6);
+  EXPECT_EQ(mask_points_for(5.0f / 64.0f), 5);  // a whole count, give or take rounding
+  EXPECT_EQ(mask_points_for(5.0001f / 64.0f), 5);
+  EXPECT_EQ(mask_points_for(0.0f), 1);
+  EXPECT_EQ(mask_points_for(1.0f), 64);
+  EXPECT_EQ(mask_points_for(2.0f), 64);
+}
+
 TEST(CoverageMask, DilateAddsTheEightNeighboursWithoutWrapping) {
   EXPECT_EQ(dilate_mask(CoverageMask{1} << (3 * kMaskSide + 3)), CoverageMask{0x1c1c1c} << (2 * kMaskSide));
   // A point on the last column of a row grows to its row's columns 6 and 7, never to the next
