@@ -4,7 +4,8 @@
 // the footprint, and the coverage a mask could not hold (a mask rounds its point count) was
 // spread over all 64 points, where hundreds of such remainders filled it too: alpha up to +0.87
 // along the silhouette. Merged point by point, with the remainders kept next to their masks,
-// one ray a pixel is closer to the reference than the stochastic hider's 2x2.
+// and with the crown's strands (seen nearly end-on) measured as the exact intersector sees them,
+// one ray a pixel is closer to the reference than the stochastic hider's 2x2 by half.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -43,11 +44,12 @@ TEST(ScalpClump, OneRayAPixelBeatsStochasticTwoByTwo) {
   const Image reference = render_image(reference_rib, HiderKind::Stochastic, 2);
   const Image distance = render_image(scalp_scene(1), HiderKind::Distance, 2);
   const Image stochastic2 = render_image(scalp_scene(2), HiderKind::Stochastic, 2);
-  // Measured: distance 1x1 0.0071 (0.0286 before the merge fix), stochastic 2x2 0.0163.
+  // Measured: distance 1x1 0.0053 (0.0286 before the merge fix, 0.0071 before stubs seen end-on
+  // were measured as the exact intersector sees them), stochastic 2x2 0.0163.
   const double distance_rmse = compare(distance, reference, kRgba).rmse;
-  EXPECT_LT(distance_rmse, compare(stochastic2, reference, kRgba).rmse);
-  // No pixel of the silhouette filled: the largest alpha error was 0.87, now 0.38.
-  EXPECT_LT(compare(distance, reference, kAlpha).max, 0.5);
+  EXPECT_LT(distance_rmse, 0.5 * compare(stochastic2, reference, kRgba).rmse);
+  // No pixel of the silhouette or the crown filled: the largest alpha error was 0.87, now 0.14.
+  EXPECT_LT(compare(distance, reference, kAlpha).max, 0.3);
 }
 
 }  // namespace

@@ -101,6 +101,22 @@ void intersect_recursive(const Vec3f cp[4], const float width[4], float u0, floa
   }
 }
 
+}  // namespace
+
+bool ribbon_covers_point(const Vec3f cp[4], const float width[4], float x, float y) {
+  Vec3f shifted[4];
+  for (int i = 0; i < 4; ++i) shifted[i] = {cp[i].x - x, cp[i].y - y, cp[i].z};
+  TraversalState s{};
+  s.ray_length = 1.0f;
+  s.t_min = -std::numeric_limits<float>::infinity();
+  s.t_best = std::numeric_limits<float>::infinity();
+  s.oriented = false;
+  intersect_recursive(shifted, width, 0.0f, 1.0f, refinement_depth(shifted, 2.0f * cull_margin(width)), s);
+  return s.found;
+}
+
+namespace {
+
 bool is_finite(const Vec3f& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // A unit tangent at u: the derivative, else the chord (coincident control points), else any

@@ -25,4 +25,11 @@ struct CurveHit {
 // non-finite rays.
 bool intersect_segment(const CurveSet& set, size_t segment, const Ray& ray, CurveHit& hit);
 
+// Whether the ribbon of a segment given in a ray's frame (control points `cp`: the ray runs along
+// +z through the origin, z is depth; `width`: its Bézier width coefficients; facing the ray)
+// covers the point (x, y) of the ray's cross-section: the leaf tests intersect_segment makes, for
+// the parallel ray through (x, y). What the distance hider measures a segment against where no
+// band describes it (a segment shorter on the screen than it is wide).
+bool ribbon_covers_point(const Vec3f cp[4], const float width[4], float x, float y);
+
 }  // namespace darc

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/geometry/curves/curve_distance_intersector.h"
+#include "core/geometry/curves/curve_intersector.h"
 #include "support/curve_segments.h"
 
 namespace darc {
@@ -209,6 +210,43 @@ TEST(CurveDistance, NoFootprintIsAHitTest) {
   ASSERT_TRUE(inside.hit);
   EXPECT_EQ(inside.h.coverage, 1.0f);
   EXPECT_FALSE(probe(set, Ray{{0, 0.21f, 0}, {0, 0, 1}}, none).hit);
+}
+
+}  // namespace
+}  // namespace darc
+
+namespace darc {
+namespace {
+
+// A segment seen nearly end-on that bends: on the screen a stub a fraction of its width long
+// whose ends point off its chord. As a band through its closest point, left uncut at its joints
+// (they turn on the screen), it covered a stripe across the footprint; its coverage is now what
+// the exact intersector's rays through the footprint see (the scalp's crown).
+TEST(CurveDistance, StubSeenEndOnCoversWhatTheExactIntersectorSees) {
+  // Mostly along the ray (+z), 0.3 long on the screen against a width of 1: a joint at each end.
+  const std::array<Vec3f, 4> points{Vec3f{-0.15f, 0.0f, 4.0f}, Vec3f{-0.05f, 0.12f, 5.0f},
+                                    Vec3f{0.05f, 0.12f, 6.0f}, Vec3f{0.15f, 0.0f, 7.0f}};
+  CurveSet set;
+  set.add_segment(points, {1.0f, 1.0f, 1.0f, 1.0f}, 0, 0);
+  SegmentEnds joints;
+  joints.cut_joints = true;  // the segment is between two others of its strand
+  for (const Vec3f origin : {Vec3f{0, 0, 0}, Vec3f{0.5f, 0.2f, 0}, Vec3f{-0.6f, -0.5f, 0}}) {
+    const Ray ray{origin, {0, 0, 1}};
+    const RayFootprint fp = orthographic(1.5f);
+    CurveFragmentHit h;
+    ASSERT_TRUE(intersect_segment_distance(set, 0, ray, fp, CoverageModel::Square, joints, h, true));
+    // The exact intersector on a 64 x 64 grid of parallel rays through the footprint.
+    int inside = 0;
+    for (int j = 0; j < 64; ++j)
+      for (int i = 0; i < 64; ++i) {
+        const float u = (float(i) + 0.5f) / 64.0f - 0.5f, v = (float(j) + 0.5f) / 64.0f - 0.5f;
+        CurveHit exact;
+        inside += intersect_segment(set, 0, Ray{origin + Vec3f{1.5f * u, 1.5f * v, 0}, {0, 0, 1}}, exact);
+      }
+    const float expected = float(inside) / (64.0f * 64.0f);
+    EXPECT_NEAR(h.coverage, expected, 0.03f) << "ray from " << origin.x << " " << origin.y;
+    EXPECT_LE(float(mask_count(h.mask)) / 64.0f, expected + 0.35f) << "the mask stays around the stub";
+  }
 }
 
 }  // namespace
