@@ -344,7 +344,7 @@ CoverageMask fragment_mask(const DistanceState& s, const EndFalloff& ends, float
 // head's crown, strands pointing at the camera) is no band across the footprint: on the screen
 // it is a stub a fraction of its width long that turns sharply at its joints even where the strand
 // bends a little, so they are left uncut and its band runs on across the footprint (the scalp's
-// crown: alpha 0.68 where the strands cover 0.52). Such a segment is measured as the exact
+// crown: alpha 0.75 where the strands cover 0.52). Such a segment is measured as the exact
 // intersector sees it (ribbon_covers_point) at the footprint's 8 x 8 mask points: its mask is the
 // points it covers, its coverage their share (a 16 x 16 grid was no closer on the scalp and the
 // fur ball, and made thumbnails 20 % slower). Depth and shading point stay the leaves'.
