@@ -181,8 +181,7 @@ class ABuffer {
         composite_equal_depth(first, last, shade);
       first = last;
     }
-    for (size_t i = 0; i < n; ++i)
-      if (pending_[i].preshaded) free_merged_[size_t(free_count_++)] = pending_[i].merged;
+    for (size_t i = 0; i < n; ++i) release_merged(pending_[i]);
     pending_.erase(pending_.begin(), pending_.begin() + long(n));
     nearest_pending_ = pending_.empty() ? std::numeric_limits<float>::infinity() : pending_.front().t;
     return n;
@@ -207,7 +206,7 @@ class ABuffer {
         continue;
       }
       composite(f, shade);
-      if (f.preshaded) free_merged_[size_t(free_count_++)] = f.merged;
+      release_merged(f);
       ++n;
     }
     pending_.resize(kept);
@@ -457,15 +456,13 @@ class ABuffer {
   void composite(const Fragment& f, Shade& shade) {
     const Layer l = layer_of(f, shade);
     Vec3f sum, lost;
-    if (l.points) {
-      for (int b = 0; b < kPoints; ++b) {
+    for (int b = 0; b < kPoints; ++b) {
+      if (l.points) {
         const Vec3f &Ci = l.points->Ci[size_t(b)], &Oi = l.points->Oi[size_t(b)];
         if (Oi != Vec3f{} || Ci != Vec3f{}) composite_point(b, Ci, Oi, 1.0f, sum, lost);
+      } else if (const float o = l.at(b); o != 0.0f) {
+        composite_point(b, l.s.Ci, l.s.Oi, o, sum, lost);
       }
-    }
-    for (int b = 0; b < kPoints && !l.points; ++b) {
-      float o = l.at(b);
-      if (o != 0.0f) composite_point(b, l.s.Ci, l.s.Oi, o, sum, lost);
     }
     color_ += sum * (1.0f / kPoints);
     settle_transmittance(lost);
@@ -549,10 +546,15 @@ class ABuffer {
       m.Ci[size_t(p)] = a_Ci + mul(one - a_Oi, b_Ci);
       m.Oi[size_t(p)] = one - mul(one - a_Oi, one - b_Oi);
     }
-    if (near.preshaded && far.preshaded) free_merged_[size_t(free_count_++)] = far.merged;
+    if (near.preshaded) release_merged(far);  // far's record, if any; near's now holds both
     near.preshaded = true;
     near.merged = into;
     near.sites = -1;
+  }
+
+  // A merged fragment's record is free again once it is composited or merged into another.
+  void release_merged(const Fragment& f) {
+    if (f.preshaded) free_merged_[size_t(free_count_++)] = f.merged;
   }
 
   // A merged record to write: a freed one, or a new one (records stay allocated between rays).

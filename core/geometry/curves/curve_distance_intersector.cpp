@@ -348,26 +348,22 @@ CoverageMask fragment_mask(const DistanceState& s, const EndFalloff& ends, float
 // intersector sees it (ribbon_covers_point) at the footprint's 8 x 8 mask points: its mask is the
 // points it covers, its coverage their share (a 16 x 16 grid was no closer on the scalp and the
 // fur ball, and made thumbnails 20 % slower). Depth and shading point stay the leaves'.
-constexpr int kStubSamples = 8;
 constexpr float kStubChordFraction = 1.0f;  // of the width: shorter chords on the screen are stubs
 constexpr float kStubForeshortening = 0.5f;  // and shorter than this fraction of the chord in space
 
 bool stub_coverage(const Vec3f cp[4], const float width[4], const DistanceState& s, bool compute_mask,
                    CurveFragmentHit& hit) {
   const FootprintAt f = s.footprint_at(hit.t);
-  int inside = 0;
   CoverageMask mask = 0;
-  const float step = 1.0f / kStubSamples;
-  constexpr int kPerPoint = kStubSamples / kMaskSide;
-  for (int j = 0; j < kStubSamples; ++j)
-    for (int i = 0; i < kStubSamples; ++i) {
+  const float step = 1.0f / kMaskSide;
+  for (int j = 0; j < kMaskSide; ++j)
+    for (int i = 0; i < kMaskSide; ++i) {
       const float u = (float(i) + 0.5f) * step - 0.5f, v = (float(j) + 0.5f) * step - 0.5f;
-      if (!ribbon_covers_point(cp, width, u * f.ax_x + v * f.ay_x, u * f.ax_y + v * f.ay_y)) continue;
-      ++inside;
-      mask |= CoverageMask{1} << ((j / kPerPoint) * kMaskSide + i / kPerPoint);
+      if (ribbon_covers_point(cp, width, u * f.ax_x + v * f.ay_x, u * f.ax_y + v * f.ay_y))
+        mask |= CoverageMask{1} << (j * kMaskSide + i);
     }
-  if (inside == 0) return false;
-  hit.coverage = float(inside) / float(kStubSamples * kStubSamples);
+  if (mask == 0) return false;
+  hit.coverage = float(mask_count(mask)) / float(kMaskSide * kMaskSide);
   hit.mask = compute_mask ? mask : kFullMask;
   return true;
 }
