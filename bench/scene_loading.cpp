@@ -19,7 +19,7 @@ std::optional<std::string> read_text(const std::string& path) {
 }
 
 std::optional<LoadedScene> load_scene(const std::string& text, const std::string& name, bool build_acceleration,
-                                      AcceleratorKind accelerator) {
+                                      AcceleratorKind accelerator, int frame) {
   using Clock = std::chrono::steady_clock;
   auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   LoadedScene loaded;
@@ -31,8 +31,9 @@ std::optional<LoadedScene> load_scene(const std::string& text, const std::string
   {  // the parser and builder are gone before the resident set is read again
     Diagnostics diag;  // prints to stderr
     SceneBuilder::Callbacks cb;
+    int frames_seen = 0;
     cb.frame_ready = [&](Scene&& s) {
-      if (!scene) scene.emplace(std::move(s));
+      if (++frames_seen == frame) scene.emplace(std::move(s));
     };
     SceneBuilder builder(diag, cb);
     RibParser parser(builder, diag);

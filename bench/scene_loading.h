@@ -25,10 +25,10 @@ struct LoadedScene {
   uint64_t heap_before_bytes = 0, heap_after_bytes = 0;
 };
 
-// Parses `text` (named `name` in diagnostics, which go to stderr) and returns its first frame
-// with the acceleration structure of kind `accelerator` built (unless `build_acceleration` is
-// false), or nullopt when it has errors or no frame.
+// Parses `text` (named `name` in diagnostics, which go to stderr) and returns its frame number
+// `frame` (1: the first the file renders) with the acceleration structure of kind `accelerator`
+// built (unless `build_acceleration` is false), or nullopt when it has errors or fewer frames.
 std::optional<LoadedScene> load_scene(const std::string& text, const std::string& name, bool build_acceleration = true,
-                                      AcceleratorKind accelerator = kDefaultAccelerator);
+                                      AcceleratorKind accelerator = kDefaultAccelerator, int frame = 1);
 
 }  // namespace darc::bench

@@ -68,7 +68,8 @@ inline std::optional<EqualErrorSpeedup> equal_error_speedup(const SceneReport& s
 // reference sample count and the work per primary ray.
 inline constexpr const char* kCsv640Header =
     "scene,hider,samples,seconds,rmse,max_error,reference_samples,segment_tests_per_ray,fragments_per_ray,"
-    "cells_per_ray,intersect_calls_per_ray,ns_per_segment_test";
+    "cells_per_ray,intersect_calls_per_ray,ns_per_segment_test,surface_tests_per_ray,surface_pieces_per_ray,"
+    "shadow_rays_per_ray,segment_tests_per_shadow_ray";
 
 // Writes the header and one row per setting of every scene (`samples` = N*N, reference_samples
 // likewise); `threads` is the render thread count (for ns_per_segment_test).
@@ -80,12 +81,14 @@ inline void write_speed_error_640_csv(std::ostream& out, std::span<const SceneRe
     for (size_t i = 0; i < s.settings.size(); ++i) {
       const Measurement& m = s.settings[i];
       const WorkCounters w = i < s.work.size() ? s.work[i] : WorkCounters{};
-      char buf[320];
-      std::snprintf(buf, sizeof buf, ",%d,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%.6g,%.6g",
+      char buf[480];
+      std::snprintf(buf, sizeof buf, ",%d,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g",
                     m.samples_per_axis * m.samples_per_axis, m.seconds, m.error.rmse, m.error.max_error, ref * ref,
                     per_ray(w.segment_tests, w.primary_rays), per_ray(w.fragments, w.primary_rays),
                     per_ray(w.cells_visited, w.primary_rays), per_ray(w.intersect_calls, w.primary_rays),
-                    ns_per_segment_test(m.seconds, threads, w.segment_tests));
+                    ns_per_segment_test(m.seconds, threads, w.segment_tests), per_ray(w.surface_tests, w.primary_rays),
+                    per_ray(w.surface_pieces, w.primary_rays), per_ray(w.shadow_rays, w.primary_rays),
+                    per_ray(w.shadow_segment_tests, w.shadow_rays));
       out << m.scene << "," << m.hider << buf << "\n";
     }
   }

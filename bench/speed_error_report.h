@@ -27,6 +27,10 @@ struct WorkCounters {
   uint64_t intersect_calls = 0;  // rtcIntersect1 calls (Embree peer)
   uint64_t secondary_rays = 0;   // shadow, reflection and refraction rays traced (darc)
   uint64_t pruned_rays = 0;      // secondary rays not traced: contribution weight under the threshold (darc)
+  uint64_t surface_tests = 0;    // ray-surface tests: exact rays and footprint sub-rays (darc)
+  uint64_t surface_pieces = 0;   // surfaces a footprint covered analytically, without sub-rays (darc)
+  uint64_t shadow_rays = 0;      // shadow rays traced (part of secondary_rays; darc)
+  uint64_t shadow_segment_tests = 0;  // the segment tests of shadow rays (part of segment_tests; darc)
 };
 
 // One render setting of one scene, measured.

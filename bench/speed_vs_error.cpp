@@ -63,6 +63,7 @@ struct Options {
   std::string sort_interval_scenes;  // comma-separated names; empty: all
   ReferenceSettings reference;
   std::vector<std::string> reference_overrides;  // NAME=N: that scene's reference is N x N
+  std::vector<std::string> frame_overrides;      // NAME=N: that scene is its file's frame N (default 1)
   int max_runs = kDefaultMaxRuns;
   double repeat_budget_seconds = kDefaultRepeatBudgetSeconds;
   int threads = 0;  // 0: all cores
@@ -124,6 +125,10 @@ WorkCounters work_of(const RayCounters& c) {
   w.cells_visited = c.cells_visited;
   w.secondary_rays = c.secondary_rays;
   w.pruned_rays = c.pruned_rays;
+  w.surface_tests = c.surface_tests;
+  w.surface_pieces = c.surface_pieces;
+  w.shadow_rays = c.traced_by_kind[int(SecondaryKind::Shadow)];
+  w.shadow_segment_tests = c.shadow_segment_tests;
   return w;
 }
 
@@ -136,13 +141,19 @@ RenderOptions render_options(HiderKind hider, const Options& o) {
   return ro;
 }
 
+// N of the NAME=N among `overrides` for scene `name`, or `fallback`.
+int override_for(const std::vector<std::string>& overrides, const std::string& name, int fallback) {
+  for (const std::string& arg : overrides) {
+    size_t eq = arg.find('=');
+    if (eq != std::string::npos && arg.substr(0, eq) == name) return std::max(1, std::atoi(arg.c_str() + eq + 1));
+  }
+  return fallback;
+}
+
 // The scene's reference settings: the run's, or NAME=N from --reference-samples-for.
 ReferenceSettings reference_for(const Options& o, const std::string& name) {
   ReferenceSettings r = o.reference;
-  for (const std::string& arg : o.reference_overrides) {
-    size_t eq = arg.find('=');
-    if (eq != std::string::npos && arg.substr(0, eq) == name) r.samples_per_axis = std::max(1, std::atoi(arg.c_str() + eq + 1));
-  }
+  r.samples_per_axis = override_for(o.reference_overrides, name, r.samples_per_axis);
   return r;
 }
 
@@ -297,9 +308,10 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
     return std::nullopt;
   }
   const bool peak_reset = reset_peak_resident();
-  std::optional<LoadedScene> loaded = load_scene(*text, path, true, accelerator_kind(o));
+  const int frame = override_for(o.frame_overrides, name, 1);
+  std::optional<LoadedScene> loaded = load_scene(*text, path, true, accelerator_kind(o), frame);
   if (!loaded) {
-    std::fprintf(stderr, "speed_vs_error: error: %s has errors or no frame\n", path.c_str());
+    std::fprintf(stderr, "speed_vs_error: error: %s has errors or no frame %d\n", path.c_str(), frame);
     return std::nullopt;
   }
   Scene& scene = loaded->scene;
@@ -321,6 +333,8 @@ std::optional<SceneReport> measure_scene(const std::string& name, const std::str
   std::fprintf(stderr, "  load: parse %.3f s, acceleration %.3f s, heap +%.1f MB, resident +%.1f MB\n", loaded->parse_seconds,
                loaded->build_seconds, double(report.load.heap_growth_bytes) / 1e6,
                double(report.load.resident_growth_bytes) / 1e6);
+  // The reference cache is keyed by the text: a frame other than the first is another scene.
+  if (frame != 1) *text += "\n# frame " + std::to_string(frame);
   const ReferenceSettings reference_settings = reference_for(o, name);
   report.reference_samples_per_axis = reference_settings.samples_per_axis;
   std::optional<Image> reference = reference_image(scene, *text, name, o, reference_settings, report.reference_seconds);
@@ -449,6 +463,7 @@ int main(int argc, char** argv) {
   app.add_option("--sort-interval-scenes", o.sort_interval_scenes, "comma-separated scenes for the sort-interval sweep (default all)");
   app.add_option("--threads", o.threads, "render threads, 0 = all cores");
   app.add_option("--reference-samples-for", o.reference_overrides, "NAME=N: scene NAME's reference is N x N");
+  app.add_option("--frame-for", o.frame_overrides, "NAME=N: scene NAME is frame N of its file (default 1)");
   app.add_option("--stochastic-max", o.stochastic_max, "costliest stochastic and Embree N x N measured")
       ->check(CLI::IsMember({1, 2, 4, 8, 16}));
   app.add_flag("!--no-variants", o.variants, "skip the coverage-model and sort-interval sweeps");

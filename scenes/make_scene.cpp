@@ -1,7 +1,7 @@
 // Generates the demo and benchmark hair scenes as RIB text on standard output:
 //   darc_make_scene KIND SIZE [RES]
-// KIND: furball | hairball | grass | transparent-hair | scalp-hair | hairball-medium, and for
-// the secondary rays hair-shadow | hair-mirror | hair-glass;
+// KIND: furball | hairball | grass | transparent-hair | scalp-hair | hairball-medium, for
+// the secondary rays hair-shadow | hair-mirror | hair-glass, and head-hair | grass-terrain;
 // SIZE: small | large | demo | 640.
 // SIZE 640 is the 640x480 benchmark (bench/speed_vs_error --size 640): every image is RES x
 // RES*3/4 (RES defaults to 640) and the first four kinds have about 30k cubic segments,
@@ -9,6 +9,9 @@
 // The secondary-ray kinds (scripts/bench-speed-vs-error --secondary) have about 30k segments too:
 // hair-shadow a tuft on a ground under a spotlight with ray-traced shadows, hair-mirror a hair
 // ball beside a flat mirror, hair-glass a curtain of hair behind a glass sphere.
+// The whole scenes (--size whole) put hair on the meshes it grows on, under shadowing lights:
+// head-hair the scalp's hair on a head mesh (4.6k faces), grass-terrain the grass on a displaced
+// terrain mesh (9.2k quads).
 // Everything is a deterministic function of the arguments (fixed-seed generator), so the
 // benchmark can regenerate a scene and compare it with a cached reference.
 #include <algorithm>
@@ -248,19 +251,59 @@ bool on_scalp(V3 d) { return d.y > 0.35 || (d.z > -0.2 && d.y > -0.45 + 0.4 * st
 // The direction strands are combed in: down, and back away from the face (at -z).
 const V3 kCombDirection = normalized(V3{0, -1, 0.2});
 
+// The head's surface: its distance from the centre along the unit direction d. The scalp scene's
+// head is the sphere of kHeadRadius; the head-hair scene's a head-shaped mesh (head_mesh_radius).
+// Where hair grows (a predicate on unit directions) and the direction it is combed in go with it.
+struct Head {
+  double (*radius)(V3 d);
+  bool (*grows_hair)(V3 d);
+  V3 comb;
+};
+double sphere_head_radius(V3) { return kHeadRadius; }
+const Head kSphereHead{sphere_head_radius, on_scalp, kCombDirection};
+
 // One strand grown from `root_dir` on the scalp: starts along the normal, bends towards the
 // comb direction step by step, and slides over the head instead of entering it.
-std::vector<V3> grow_combed_strand(V3 root_dir, double strand_length) {
+std::vector<V3> grow_combed_strand(V3 root_dir, double strand_length, const Head& head) {
   std::vector<V3> s;
-  V3 p = root_dir * (kHeadRadius * kScalpClearance), d = normalized(root_dir * 0.4 + kCombDirection * 0.6);
+  V3 p = root_dir * (head.radius(root_dir) * kScalpClearance), d = normalized(root_dir * 0.4 + head.comb * 0.6);
   const double step = strand_length / (kScalpPointsPerStrand - 1);
   for (int k = 0; k < kScalpPointsPerStrand; ++k) {
     s.push_back(p);
-    d = normalized(d * 0.55 + kCombDirection * 0.45);
+    d = normalized(d * 0.55 + head.comb * 0.45);
     p = p + d * step;
-    if (length(p) < kHeadRadius * kScalpClearance) p = normalized(p) * (kHeadRadius * kScalpClearance);
+    if (const double r = head.radius(normalized(p)) * kScalpClearance; length(p) < r) p = normalized(p) * r;
   }
   return s;
+}
+
+// `n` strands in clumps of kStrandsPerClump on the scalp of `head`.
+std::vector<std::vector<V3>> scalp_strands(Rng& rng, int n, const Head& head) {
+  std::vector<std::vector<V3>> strands;
+  while (int(strands.size()) < n) {
+    V3 clump_dir = rng.unit_vector();
+    if (!head.grows_hair(clump_dir)) continue;
+    const double clump_length = 1.6 + 0.8 * rng.uniform();
+    std::vector<V3> guide = grow_combed_strand(clump_dir, clump_length, head);
+    // Waves across the strand's fall, the same phase for a whole clump (as combed hair).
+    const V3 across = normalized(cross(V3{0, 1, 0}, clump_dir) + V3{1e-3, 0, 0});
+    const double wave_phase = 2 * std::numbers::pi * rng.uniform(), wave_amplitude = 0.02 + 0.03 * rng.uniform();
+    for (int j = 0; j < kStrandsPerClump && int(strands.size()) < n; ++j) {
+      V3 dir = normalized(clump_dir + rng.unit_vector() * 0.12);
+      if (!head.grows_hair(dir)) dir = clump_dir;
+      std::vector<V3> s = grow_combed_strand(dir, clump_length * (0.9 + 0.15 * rng.uniform()), head);
+      const double clumping = 0.5 + 0.4 * rng.uniform();  // how far the tip is pulled onto the guide
+      for (size_t k = 0; k < s.size(); ++k) {
+        double t = double(k) / double(s.size() - 1);
+        V3 pulled = s[k] + (guide[k] - s[k]) * (clumping * t * t);
+        V3 waved = pulled + across * (wave_amplitude * t * std::sin(wave_phase + 5 * std::numbers::pi * t));
+        if (const double r = head.radius(normalized(waved)) * kScalpClearance; length(waved) < r) waved = normalized(waved) * r;
+        s[k] = waved;
+      }
+      strands.push_back(std::move(s));
+    }
+  }
+  return strands;
 }
 
 void scalp_hair(const std::string& size, int res) {
@@ -274,31 +317,163 @@ void scalp_hair(const std::string& size, int res) {
               kHeadRadius, -kHeadRadius, kHeadRadius);
   std::printf("AttributeBegin\nColor [0.45 0.3 0.16]\nSurface \"hair\" \"Ks\" [0.35] \"roughness\" [0.06]\n");
   const int n = size == "640" ? 10000 : strands_for(size, 1000, 3000, 6000, 15);
-  std::vector<std::vector<V3>> strands;
-  while (int(strands.size()) < n) {
-    V3 clump_dir = rng.unit_vector();
-    if (!on_scalp(clump_dir)) continue;
-    const double clump_length = 1.6 + 0.8 * rng.uniform();
-    std::vector<V3> guide = grow_combed_strand(clump_dir, clump_length);
-    // Waves across the strand's fall, the same phase for a whole clump (as combed hair).
-    const V3 across = normalized(cross(V3{0, 1, 0}, clump_dir) + V3{1e-3, 0, 0});
-    const double wave_phase = 2 * std::numbers::pi * rng.uniform(), wave_amplitude = 0.02 + 0.03 * rng.uniform();
-    for (int j = 0; j < kStrandsPerClump && int(strands.size()) < n; ++j) {
-      V3 dir = normalized(clump_dir + rng.unit_vector() * 0.12);
-      if (!on_scalp(dir)) dir = clump_dir;
-      std::vector<V3> s = grow_combed_strand(dir, clump_length * (0.9 + 0.15 * rng.uniform()));
-      const double clumping = 0.5 + 0.4 * rng.uniform();  // how far the tip is pulled onto the guide
-      for (size_t k = 0; k < s.size(); ++k) {
-        double t = double(k) / double(s.size() - 1);
-        V3 pulled = s[k] + (guide[k] - s[k]) * (clumping * t * t);
-        V3 waved = pulled + across * (wave_amplitude * t * std::sin(wave_phase + 5 * std::numbers::pi * t));
-        if (length(waved) < kHeadRadius * kScalpClearance) waved = normalized(waved) * (kHeadRadius * kScalpClearance);
-        s[k] = waved;
-      }
-      strands.push_back(std::move(s));
-    }
-  }
+  const std::vector<std::vector<V3>> strands = scalp_strands(rng, n, kSphereHead);
   emit_strands(strands, 0.9 * px, 0.35 * px);
+  std::printf("AttributeEnd\nWorldEnd\n");
+}
+
+// --- The whole scenes (scripts/bench-speed-vs-error --size whole): hair on the meshes it grows
+// on, under lights that cast shadows through it. ---
+
+// Emits a PointsPolygons of a (rows + 1) x (cols + 1) grid of vertices `grid[i * (cols + 1) + j]`
+// with vertex normals `normals`, as quads; a row whose vertices all coincide (a pole) makes
+// triangles with the next row instead of degenerate quads.
+void emit_grid_mesh(const std::vector<V3>& grid, const std::vector<V3>& normals, int rows, int cols) {
+  auto at = [&](int i, int j) { return i * (cols + 1) + j; };
+  auto is_pole = [&](int i) { return length(grid[at(i, 0)] - grid[at(i, cols / 2)]) < 1e-12; };
+  std::vector<int> nverts, indices;
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < cols; ++j) {
+      std::vector<int> face;
+      if (!is_pole(i)) face.push_back(at(i, j));
+      face.push_back(at(i + 1, j));
+      if (!is_pole(i + 1)) face.push_back(at(i + 1, j + 1));
+      face.push_back(at(i, j + 1));
+      nverts.push_back(int(face.size()));
+      indices.insert(indices.end(), face.begin(), face.end());
+    }
+  std::printf("PointsPolygons [");
+  for (int n : nverts) std::printf(" %d", n);
+  std::printf(" ]\n[");
+  for (size_t k = 0; k < indices.size(); ++k) std::printf(k % 24 == 23 ? " %d\n" : " %d", indices[k]);
+  std::printf(" ]\n\"P\" [\n");
+  for (V3 p : grid) std::printf(" %.5g %.5g %.5g\n", p.x, p.y, p.z);
+  std::printf("] \"N\" [\n");
+  for (V3 n : normals) std::printf(" %.4g %.4g %.4g\n", n.x, n.y, n.z);
+  std::printf("]\n");
+}
+
+// The head-hair scene's head: an egg taller than wide, a jaw narrowing below the ears, and a
+// brow, a nose and a chin at the front (-z), as the distance from the centre along the unit
+// direction d. On the scalp (on_scalp) it is the egg alone, so the hair lies on it.
+double head_mesh_radius(V3 d) {
+  const double ex = d.x / 0.86, ey = d.y / 1.08, ez = d.z / 1.0;
+  double r = 1 / std::sqrt(ex * ex + ey * ey + ez * ez);
+  const double jaw = std::clamp((-0.1 - d.y) / 0.6, 0.0, 1.0);
+  r *= 1 - 0.45 * jaw * d.x * d.x;
+  if (d.z < 0) {
+    const double front = std::pow(-d.z, 4.0);
+    r += 0.16 * std::exp(-(d.x / 0.08) * (d.x / 0.08) - ((d.y + 0.1) / 0.16) * ((d.y + 0.1) / 0.16)) * front;  // nose
+    r += 0.025 * std::exp(-((d.y - 0.22) / 0.1) * ((d.y - 0.22) / 0.1)) * front;                           // brow
+    r += 0.07 * std::exp(-(d.x / 0.22) * (d.x / 0.22) - ((d.y + 0.62) / 0.12) * ((d.y + 0.62) / 0.12)) * front;  // chin
+  }
+  return r;
+}
+
+// The head mesh's hairline: the scalp's, without the forehead, and combed back from the face.
+bool head_mesh_grows_hair(V3 d) { return on_scalp(d) && (d.z > -0.35 || d.y > 0.55); }
+const Head kMeshHead{head_mesh_radius, head_mesh_grows_hair, normalized(V3{0, -0.7, 0.8})};
+
+// A point of a surface r(d) * d given by its direction's polar angle theta (from +y) and azimuth phi.
+V3 polar_direction(double theta, double phi) {
+  return {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
+}
+
+// The head as a mesh of 64 x 72 faces (4464 quads, 144 triangles at the poles), with vertex
+// normals from the surface's derivatives.
+void emit_head_mesh() {
+  constexpr int kRows = 64, kCols = 72;
+  auto point = [](double theta, double phi) {
+    V3 d = polar_direction(theta, phi);
+    return d * head_mesh_radius(d);
+  };
+  std::vector<V3> grid, normals;
+  for (int i = 0; i <= kRows; ++i)
+    for (int j = 0; j <= kCols; ++j) {
+      const double theta = std::numbers::pi * i / kRows, phi = 2 * std::numbers::pi * j / kCols;
+      grid.push_back(i == 0 ? V3{0, head_mesh_radius({0, 1, 0}), 0}
+                            : i == kRows ? V3{0, -head_mesh_radius({0, -1, 0}), 0} : point(theta, phi));
+      const double h = 1e-4, t = std::clamp(theta, h, std::numbers::pi - h);
+      V3 n = normalized(cross(point(t, phi + h) - point(t, phi - h), point(t + h, phi) - point(t - h, phi)));
+      if (i == 0 || i == kRows) n = V3{0, i == 0 ? 1.0 : -1.0, 0};
+      if (dot(n, grid.back()) < 0) n = n * -1;
+      normals.push_back(n);
+    }
+  emit_grid_mesh(grid, normals, kRows, kCols);
+}
+
+// The scalp's hair (10k strands of 15 segments at SIZE 640, as scalp-hair) on a head mesh with a
+// neck, seen three-quarters from the front, under a spot light with ray-traced shadows from the
+// upper left and a dim fill light without: the hair shades the forehead and the neck, the head
+// shades the hair on its far side.
+void head_hair(const std::string& size, int res) {
+  Rng rng(9);
+  const ImageSize image = square_or_640(size, res);
+  const double fov = 30, px = pixel_size(7.5, fov, image.short_side());
+  begin_world(image.xres, image.yres, fov, "Translate 0 0.4 7.5\nRotate 12 1 0 0\nRotate -35 0 1 0", "head-hair.exr");
+  std::printf("LightSource \"ambientlight\" 1 \"intensity\" [0.08]\n");
+  std::printf("LightSource \"shadowspot\" 2 \"intensity\" [55] \"from\" [-3 5 -4] \"to\" [0 -0.4 0] "
+              "\"coneangle\" [0.45] \"conedeltaangle\" [0.1] \"string shadowname\" [\"raytrace\"]\n");
+  std::printf("LightSource \"distantlight\" 3 \"intensity\" [0.25] \"from\" [3 1 -2] \"to\" [0 0 0]\n");
+  std::printf("AttributeBegin\nColor [0.8 0.62 0.5]\nSurface \"matte\"\n");
+  emit_head_mesh();
+  std::printf("AttributeBegin\nTranslate 0 -0.45 0.05\nRotate 90 1 0 0\nCylinder 0.4 0 1.6 360\nAttributeEnd\n");
+  std::printf("AttributeEnd\n");
+  std::printf("AttributeBegin\nColor [0.45 0.3 0.16]\nSurface \"hair\" \"Ks\" [0.35] \"roughness\" [0.06]\n");
+  const int n = size == "640" ? 10000 : strands_for(size, 1000, 3000, 6000, 15);
+  emit_strands(scalp_strands(rng, n, kMeshHead), 0.9 * px, 0.35 * px);
+  std::printf("AttributeEnd\nWorldEnd\n");
+}
+
+// The grass field's ground as rolling hills rising away from the camera (a height field).
+double terrain_height(double x, double z) {
+  return 0.35 * std::sin(0.45 * x + 0.2 * z) * std::cos(0.3 * z) + 0.12 * std::sin(1.3 * x - 0.9 * z) + 0.025 * z;
+}
+
+// Grass (as the grass scene: 30k segments at SIZE 640) rooted on a displaced terrain mesh of
+// 96 x 96 quads, under a low sun from the left (a distant light with ray-traced shadows): blades
+// shade the ground and each other, hills shade the blades behind them.
+void grass_terrain(const std::string& size, int res) {
+  Rng rng(10);
+  const double fov = 40;
+  const int yres = res * 3 / 4;
+  const double px = pixel_size(2, fov, yres);
+  char camera[128];
+  std::snprintf(camera, sizeof camera, "Rotate -8 1 0 0\nTranslate 0 %.4g 0.5", -(terrain_height(0, -0.5) + 0.75));
+  begin_world(res, yres, fov, camera, "grass-terrain.exr");
+  std::printf("LightSource \"ambientlight\" 1 \"intensity\" [0.2]\n");
+  std::printf("LightSource \"shadowdistant\" 2 \"intensity\" [1.1] \"from\" [-3 2.2 -1] \"to\" [0 0 0] "
+              "\"string shadowname\" [\"raytrace\"]\n");
+  constexpr int kQuads = 96;
+  constexpr double kX0 = -25, kX1 = 25, kZ0 = -1, kZ1 = 47;
+  std::vector<V3> grid, normals;
+  for (int i = 0; i <= kQuads; ++i)
+    for (int j = 0; j <= kQuads; ++j) {
+      const double z = kZ0 + (kZ1 - kZ0) * i / kQuads, x = kX0 + (kX1 - kX0) * j / kQuads, h = 1e-4;
+      grid.push_back({x, terrain_height(x, z), z});
+      normals.push_back(normalized(V3{terrain_height(x - h, z) - terrain_height(x + h, z), 2 * h,
+                                      terrain_height(x, z - h) - terrain_height(x, z + h)}));
+    }
+  std::printf("AttributeBegin\nColor [0.3 0.24 0.13]\nSurface \"matte\"\n");
+  emit_grid_mesh(grid, normals, kQuads, kQuads);
+  std::printf("AttributeEnd\n");
+  std::printf("AttributeBegin\nColor [0.2 0.6 0.15]\nSurface \"plastic\" \"Ks\" [0.2]\n");
+  int n = strands_for(size, 6000, 30000, 20000, 3);
+  std::vector<std::vector<V3>> strands;
+  for (int i = 0; i < n; ++i) {
+    double z = 1 + 40 * rng.uniform() * rng.uniform();
+    double x = (rng.uniform() - 0.5) * (2 + z * 0.9);
+    V3 root{x, terrain_height(x, z), z};
+    V3 lean{rng.uniform() - 0.5, 0, rng.uniform() - 0.5};
+    double h = 0.2 + 0.25 * rng.uniform();
+    std::vector<V3> s;
+    for (int k = 0; k < 4; ++k) {
+      double t = k / 3.0;
+      s.push_back(root + V3{0, h * t, 0} + lean * (0.3 * h * t * t));
+    }
+    strands.push_back(s);
+  }
+  emit_strands(strands, 2.0 * px, 0.33 * px);
   std::printf("AttributeEnd\nWorldEnd\n");
 }
 
@@ -431,7 +606,7 @@ int main(int argc, char** argv) {
   if (argc < 3) {
     std::fprintf(stderr,
                  "usage: darc_make_scene furball|hairball|grass|transparent-hair|scalp-hair|hairball-medium|"
-                 "hair-shadow|hair-mirror|hair-glass small|large|demo|640 [RES]\n");
+                 "hair-shadow|hair-mirror|hair-glass|head-hair|grass-terrain small|large|demo|640 [RES]\n");
     return 2;
   }
   std::string kind = argv[1], size = argv[2];
@@ -454,6 +629,8 @@ int main(int argc, char** argv) {
   else if (kind == "hair-shadow") hair_shadow(size, res);
   else if (kind == "hair-mirror") hair_mirror(size, res);
   else if (kind == "hair-glass") hair_glass(size, res);
+  else if (kind == "head-hair") head_hair(size, res);
+  else if (kind == "grass-terrain") grass_terrain(size, res);
   else {
     std::fprintf(stderr, "darc_make_scene: unknown scene \"%s\"\n", kind.c_str());
     return 2;

@@ -88,6 +88,7 @@ TEST(SpeedError640Csv, HasWorkPerRayColumns) {
   s.settings.push_back({"grass", "embree", 1, 0.5, 1, {0.02, 0.3, 4}});
   WorkCounters d;
   d.primary_rays = 100, d.segment_tests = 2500, d.fragments = 300, d.cells_visited = 1000;
+  d.surface_tests = 50, d.surface_pieces = 120, d.shadow_rays = 400, d.shadow_segment_tests = 1000;
   WorkCounters e;
   e.primary_rays = 100, e.intersect_calls = 150;
   s.work = {d, e};
@@ -100,8 +101,8 @@ TEST(SpeedError640Csv, HasWorkPerRayColumns) {
   std::getline(in, second);
   EXPECT_EQ(header, kCsv640Header);
   // 2 s x 2 threads / 2500 tests = 1.6e6 ns per test.
-  EXPECT_EQ(first, "grass,distance,4,2,0.01,0.2,256,25,3,10,0,1.6e+06");
-  EXPECT_EQ(second, "grass,embree,1,0.5,0.02,0.3,256,0,0,0,1.5,0");
+  EXPECT_EQ(first, "grass,distance,4,2,0.01,0.2,256,25,3,10,0,1.6e+06,0.5,1.2,4,2.5");
+  EXPECT_EQ(second, "grass,embree,1,0.5,0.02,0.3,256,0,0,0,1.5,0,0,0,0,0");
   EXPECT_FALSE(std::getline(in, extra));
 }
 
