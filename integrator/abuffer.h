@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
@@ -38,6 +39,9 @@ struct Fragment {
   // centroid of what they cover).
   bool at_sub_ray = false;
   float sub_u = 0, sub_v = 0;
+  // Strands shaded where they are seen (at_sub_ray): the share of the strand's coverage that is
+  // (its shadow rays leave a band that much narrower than the strand).
+  float seen_share = 1;
   // Pieces of one surface (a mesh's triangles or faces): its layer key (kNoLayer: none) and the
   // depth range of what the piece covers. Pieces of one layer whose ranges meet are one
   // fragment: their coverages are areas of a partition and add up, their masks unite.
@@ -418,10 +422,52 @@ class ABuffer {
     if (f.preshaded) {
       l.points = &merged_[size_t(f.merged)];
     } else {
-      l.s = shade_fragment(f, shade);
       l.spread = spread_coverage(f.mask, f.coverage);
+      Fragment seen;
+      l.s = shade_fragment(at_visible_part(f, l.spread, seen) ? seen : f, shade);
     }
     return l;
+  }
+
+  // A strand is shaded where the footprint sees it: at the centroid of its footprint points
+  // weighted by their opacity and by the light still reaching them past what was composited in
+  // front, as footprint coordinates in `seen` (at_sub_ray, sub_u, sub_v; the shading keeps the
+  // point inside the strand's width). Its band as a whole is not what is seen: the strands of a
+  // clump overlap, the parts each shows are its edges on the outside of the clump, which a light
+  // from the viewer's side reaches, while its band's centre lies under its neighbours' shadows
+  // (issue 18: hair on a head lit from the camera's side came out black where the stochastic
+  // hider's samples, which shade what they hit, see it lit). Even a strand seen whole is better
+  // shaded where it covers the footprint than at its axis's closest approach to the ray (shadowed
+  // scenes at 160x120, 1x1 against stochastic 16x16: hair-shadow RMSE 0.0082 -> 0.0063, grass on
+  // terrain 0.0056 -> 0.0041, hair on a head 0.048 -> 0.0096; only partly hidden strands:
+  // 0.0069, 0.0049, 0.0108). `seen.seen_share` is the part of its coverage seen: its shadow rays
+  // leave a band of the strand that much narrower (hair-shadow 0.0063 -> 0.0059, grass on terrain
+  // 0.0041 -> 0.0039). False when nothing of it is seen (its light does not count).
+  bool at_visible_part(const Fragment& f, const CoverageSpread& spread, Fragment& seen) const {
+    if (f.strand == kNoStrand || f.sites >= 0 || f.at_sub_ray) return false;
+    float visible = 0, whole = 0, u = 0, v = 0;
+    constexpr float step = 1.0f / kMaskSide;
+    // Over the set points only: the point loop of compositing already costs 64 steps per fragment.
+    auto add_points = [&](CoverageMask points, float opacity) {
+      for (; points != 0; points &= points - 1) {
+        const int b = std::countr_zero(points);
+        const Vec3f& tr = point_transmittance_[b];
+        const float w = opacity * (tr.x + tr.y + tr.z);
+        visible += w;
+        whole += 3.0f * opacity;
+        u += w * float(b % kMaskSide);
+        v += w * float(b / kMaskSide);
+      }
+    };
+    add_points(spread.full, spread.full_opacity);
+    add_points(spread.ring, spread.ring_opacity);
+    if (!(visible > 0)) return false;
+    seen = f;
+    seen.at_sub_ray = true;
+    seen.sub_u = (u / visible + 0.5f) * step - 0.5f;  // point (i, j) sits at ((i + 0.5) / 8 - 1/2, ...)
+    seen.sub_v = (v / visible + 0.5f) * step - 0.5f;
+    seen.seen_share = std::min(1.0f, visible / whole);
+    return true;
   }
 
   // Composites light Ci and opacity Oi at point opacity o over footprint point b, adding the

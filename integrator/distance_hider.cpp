@@ -395,11 +395,15 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const
   RayScratch& level = scratch.at(size_t(path.depth));
   FootprintSecondaryRays secondary(ctx, counters, scratch);
   auto shade = [&](const Fragment& f) -> ShadedFragment {
-    // Surfaces are shaded where the sub-ray that found them hit; the footprint stays the ray's.
+    // Surfaces are shaded where the sub-ray that found them hit, strands where the footprint sees
+    // them (ABuffer::at_visible_part); the footprint stays the ray's.
     const Ray shading_ray = f.at_sub_ray        ? footprint_sub_ray_at(ray, footprint, f.sub_u, f.sub_v)
                             : f.surface_point < 0 ? ray
                                                   : footprint_sub_ray(ray, footprint, f.surface_point);
-    const Interaction at = make_interaction(scene, f.primitive, shading_ray, f.t, f.u, &footprint);
+    const Interaction at = make_interaction(
+        scene, f.primitive, shading_ray, f.t, f.u, &footprint,
+        f.at_sub_ray && f.strand != kNoStrand ? StrandShadingPoint::WhereTheRayCrosses : StrandShadingPoint::BandCentre,
+        f.seen_share);
     auto visible = [&] { return path.weight * level.abuffer.visibility_weight(f); };
     const LazyWeight weight(visible);
     ShadedPoint r = shade_with_secondary_rays(ctx.base.shading, ctx.base.secondary, at, normalize(shading_ray.d),

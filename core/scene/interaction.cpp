@@ -67,7 +67,7 @@ Interaction point_interaction(const PointSet& points, uint32_t local, const Ray&
 }  // namespace
 
 Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& ray, float t, float u,
-                             const RayFootprint* footprint) {
+                             const RayFootprint* footprint, StrandShadingPoint strand_point, float seen_share) {
   Interaction it;
   it.primitive = primitive;
   it.t = t;
@@ -126,11 +126,15 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
     const float side = std::sqrt(length(cross(ax, ay)));
     const Vec3f across = normalize(cross(it.dPdv, ray.d));
     const float width = std::abs(bezier(scene.curves.widths(local), u));
-    const float band = std::min(side, width);
+    const float band = std::min(side, width * std::clamp(seen_share, 0.0f, 1.0f));
     // The band's centre: on the axis when the strand is thinner than the footprint; where the ray
-    // crosses the ribbon when it is wider (kept inside the ribbon by half the band).
+    // crosses the ribbon when it is wider (kept inside the ribbon by half the band). Shaded where
+    // it is seen, anywhere across its width: keeping the band inside the strand there too pulled
+    // an edge a clump leaves uncovered back under the neighbours' shadows (hair-shadow 160x120,
+    // 1x1 against stochastic 16x16: RMSE 0.0059 against 0.0069; hair on a head 0.0096 against 0.0124).
     const Vec3f axis_point = bezier(scene.curves.control_points(local), u);
-    const float room = std::max(0.0f, 0.5f * (width - band));
+    const float room = strand_point == StrandShadingPoint::WhereTheRayCrosses ? 0.5f * width
+                                                                              : std::max(0.0f, 0.5f * (width - band));
     const float offset = std::clamp(dot(it.P - axis_point, across), -room, room);
     it.P = axis_point + across * offset;
     it.dPdx = it.dPdv * side;

@@ -34,9 +34,16 @@ struct Interaction {
   Vec3f dNdx, dNdy;
 };
 
+// Where a strand seen through a footprint is shaded across its width: on the band centred on its
+// axis (where the whole strand is), or where `ray` crosses it (the part of it the footprint sees
+// past what is in front, see ABuffer::at_visible_part), kept inside its width. `seen_share`: the
+// part of the strand's coverage the footprint sees; the band rays leave is that much narrower.
+enum class StrandShadingPoint { BandCentre, WhereTheRayCrosses };
+
 // Builds the interaction of `ray` with primitive `primitive` at `t` (u: along a curve segment).
 // `footprint` may be null (exact rays of the stochastic hider): no differentials then.
 Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& ray, float t, float u,
-                             const RayFootprint* footprint);
+                             const RayFootprint* footprint,
+                             StrandShadingPoint strand_point = StrandShadingPoint::BandCentre, float seen_share = 1.0f);
 
 }  // namespace darc
