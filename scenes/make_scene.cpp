@@ -183,6 +183,33 @@ void hairball(const std::string& size, int res, int n_strands = 0) {
   std::printf("AttributeEnd\nWorldEnd\n");
 }
 
+// The grass field's ground as rolling hills rising away from the camera (a height field).
+double terrain_height(double x, double z) {
+  return 0.35 * std::sin(0.45 * x + 0.2 * z) * std::cos(0.3 * z) + 0.12 * std::sin(1.3 * x - 0.9 * z) + 0.025 * z;
+}
+
+double flat_ground(double, double) { return 0; }
+
+// `n` grass blades of 3 cubic segments rooted on the ground of height `ground(x, z)`, denser near
+// the camera (z from 1 to 41), spread over the view's width, leaning a little each.
+std::vector<std::vector<V3>> grass_blades(Rng& rng, int n, double (*ground)(double x, double z)) {
+  std::vector<std::vector<V3>> strands;
+  for (int i = 0; i < n; ++i) {
+    double z = 1 + 40 * rng.uniform() * rng.uniform();
+    double x = (rng.uniform() - 0.5) * (2 + z * 0.9);
+    V3 root{x, ground(x, z), z};
+    V3 lean{rng.uniform() - 0.5, 0, rng.uniform() - 0.5};
+    double h = 0.2 + 0.25 * rng.uniform();
+    std::vector<V3> s;
+    for (int k = 0; k < 4; ++k) {
+      double t = k / 3.0;
+      s.push_back(root + V3{0, h * t, 0} + lean * (0.3 * h * t * t));
+    }
+    strands.push_back(s);
+  }
+  return strands;
+}
+
 void grass(const std::string& size, int res) {
   Rng rng(3);
   const double fov = 40;
@@ -195,21 +222,7 @@ void grass(const std::string& size, int res) {
   std::printf("Polygon \"P\" [-30 0 0  30 0 0  30 0 60  -30 0 60]\nAttributeEnd\n");
   std::printf("AttributeBegin\nColor [0.2 0.6 0.15]\nSurface \"plastic\" \"Ks\" [0.2]\n");
   int n = strands_for(size, 6000, 30000, 20000, 3);
-  std::vector<std::vector<V3>> strands;
-  for (int i = 0; i < n; ++i) {
-    double z = 1 + 40 * rng.uniform() * rng.uniform();
-    double x = (rng.uniform() - 0.5) * (2 + z * 0.9);
-    V3 root{x, 0, z};
-    V3 lean{rng.uniform() - 0.5, 0, rng.uniform() - 0.5};
-    double h = 0.2 + 0.25 * rng.uniform();
-    std::vector<V3> s;
-    for (int k = 0; k < 4; ++k) {
-      double t = k / 3.0;
-      s.push_back(root + V3{0, h * t, 0} + lean * (0.3 * h * t * t));
-    }
-    strands.push_back(s);
-  }
-  emit_strands(strands, 2.0 * px, 0.33 * px);
+  emit_strands(grass_blades(rng, n, flat_ground), 2.0 * px, 0.33 * px);
   std::printf("AttributeEnd\nWorldEnd\n");
 }
 
@@ -425,11 +438,6 @@ void head_hair(const std::string& size, int res) {
   std::printf("AttributeEnd\nWorldEnd\n");
 }
 
-// The grass field's ground as rolling hills rising away from the camera (a height field).
-double terrain_height(double x, double z) {
-  return 0.35 * std::sin(0.45 * x + 0.2 * z) * std::cos(0.3 * z) + 0.12 * std::sin(1.3 * x - 0.9 * z) + 0.025 * z;
-}
-
 // Grass (as the grass scene: 30k segments at SIZE 640) rooted on a displaced terrain mesh of
 // 96 x 96 quads, under a low sun from the left (a distant light with ray-traced shadows): blades
 // shade the ground and each other, hills shade the blades behind them.
@@ -459,21 +467,7 @@ void grass_terrain(const std::string& size, int res) {
   std::printf("AttributeEnd\n");
   std::printf("AttributeBegin\nColor [0.2 0.6 0.15]\nSurface \"plastic\" \"Ks\" [0.2]\n");
   int n = strands_for(size, 6000, 30000, 20000, 3);
-  std::vector<std::vector<V3>> strands;
-  for (int i = 0; i < n; ++i) {
-    double z = 1 + 40 * rng.uniform() * rng.uniform();
-    double x = (rng.uniform() - 0.5) * (2 + z * 0.9);
-    V3 root{x, terrain_height(x, z), z};
-    V3 lean{rng.uniform() - 0.5, 0, rng.uniform() - 0.5};
-    double h = 0.2 + 0.25 * rng.uniform();
-    std::vector<V3> s;
-    for (int k = 0; k < 4; ++k) {
-      double t = k / 3.0;
-      s.push_back(root + V3{0, h * t, 0} + lean * (0.3 * h * t * t));
-    }
-    strands.push_back(s);
-  }
-  emit_strands(strands, 2.0 * px, 0.33 * px);
+  emit_strands(grass_blades(rng, n, terrain_height), 2.0 * px, 0.33 * px);
   std::printf("AttributeEnd\nWorldEnd\n");
 }
 
