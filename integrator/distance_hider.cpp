@@ -41,6 +41,20 @@ Fragment fragment(float t, float coverage, uint32_t primitive, CoverageMask mask
   return f;
 }
 
+// The depth of the plane through x0 with normal n along the footprint's sub-rays
+// (footprint_sub_ray_at), to first order about the footprint's centre: with
+// t(u, v) = n . (x0 - o(u, v)) / n . d(u, v), dt/du = -(n . dox + t n . ddx) / n . d at the centre.
+DepthPlane depth_plane(const Ray& ray, const RayFootprint& footprint, const Vec3f& n, const Vec3f& x0) {
+  DepthPlane p;
+  const float nd = dot(n, ray.d);
+  if (!(std::abs(nd) > 1e-6f * length(n) * length(ray.d))) return p;  // edge-on
+  p.t0 = dot(n, x0 - ray.o) / nd;
+  p.du = -(dot(n, footprint.dox) + p.t0 * dot(n, footprint.ddx)) / nd;
+  p.dv = -(dot(n, footprint.doy) + p.t0 * dot(n, footprint.ddy)) / nd;
+  p.valid = std::isfinite(p.t0) && std::isfinite(p.du) && std::isfinite(p.dv);
+  return p;
+}
+
 // How much longer than the incoming footprint is wide a shadow ray's receiving patch may be
 // (the stretch of a surface seen about 83 degrees from its normal; footprint-everything.md §2.5).
 constexpr float kShadowPatchElongation = 2;
@@ -84,6 +98,15 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
   // prisms; reflected and refracted rays have none and keep the sub-ray tests).
   FootprintFrame frame;
   enum class FrameState { NotMade, Made, None } frame_state = FrameState::NotMade;
+  // Pieces that lie behind the plane the sub-rays start from, or touch it, are in no sub-ray's
+  // way: for a shadow ray, the pieces of the mesh around its start point.
+  StartHalfSpace start;
+  const bool has_start = footprint.start_half_space(ray.o, ray.d, start);
+  auto behind_start = [&](std::span<const Vec3f> corners) {
+    float highest = -std::numeric_limits<float>::infinity();
+    for (const Vec3f& c : corners) highest = std::max(highest, start.at(c));
+    return start.excludes(highest);
+  };
   auto analytic_frame = [&]() -> const FootprintFrame* {
     if (frame_state == FrameState::NotMade)
       frame_state = FootprintFrame::make(ray, footprint, frame) ? FrameState::Made : FrameState::None;
@@ -164,6 +187,7 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
           // of the footprint, analytically.
           ConvexOutline outline;
           if (tmin == 0.0f && scene.surfaces.convex_outline(local, outline)) {
+            if (has_start && behind_start(outline.span())) return;
             if (const FootprintFrame* fr = analytic_frame()) {
               ++counters.surface_pieces;
               counters.shadow_surface_pieces += filter.shadow;
@@ -182,6 +206,8 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
               f.t_far = h.t_far;
               f.normal = normal;
               f.covers_centre = h.covers_centre;
+              f.plane = depth_plane(ray, footprint, normal, outline.corners[0]);
+              f.planar = true;
               const Fragment* held = abuffer.add(f, shade);
               nearest = std::min(nearest, h.t);
               // Nothing behind an opaque layer that covers the whole footprint can be seen.
@@ -400,14 +426,25 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const
     const Ray shading_ray = f.at_sub_ray        ? footprint_sub_ray_at(ray, footprint, f.sub_u, f.sub_v)
                             : f.surface_point < 0 ? ray
                                                   : footprint_sub_ray(ray, footprint, f.surface_point);
+    // A surface moved to where it is seen (ABuffer::at_visible_part): its depth there on its
+    // plane, and the patch it is seen on as the footprint of what leaves it.
+    float t = f.t;
+    RayFootprint seen_footprint = footprint;
+    if (f.moved) {
+      const Ray measured = footprint_sub_ray_at(ray, footprint, f.depth_u, f.depth_v);
+      const float across = dot(shading_ray.d, f.normal);
+      const float moved_t = dot(measured.at(f.t) - shading_ray.o, f.normal) / across;
+      if (std::isfinite(moved_t) && moved_t > 0) t = moved_t;
+      seen_footprint = footprint.part(f.patch_u, f.patch_v);
+    }
     const Interaction at = make_interaction(
-        scene, f.primitive, shading_ray, f.t, f.u, &footprint,
+        scene, f.primitive, shading_ray, t, f.u, &seen_footprint,
         f.at_sub_ray && f.strand != kNoStrand ? StrandShadingPoint::WhereTheRayCrosses : StrandShadingPoint::BandCentre,
         f.seen_share);
     auto visible = [&] { return path.weight * level.abuffer.visibility_weight(f); };
     const LazyWeight weight(visible);
     ShadedPoint r = shade_with_secondary_rays(ctx.base.shading, ctx.base.secondary, at, normalize(shading_ray.d),
-                                              &footprint, path.depth, weight, secondary, counters);
+                                              &seen_footprint, path.depth, weight, secondary, counters);
     return {r.Ci, r.Oi};
   };
 

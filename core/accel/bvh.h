@@ -174,6 +174,17 @@ uint64_t Bvh::footprint_walk(Ray& ray, const RayFootprint& footprint, BvhScratch
     float far = std::min(bvh_detail::far_depth(ray, bounds_), ray.tmax);
     queue.push_back({ray.tmin, reach_over(ray.tmin, far), 0, 0});
   }
+  // Children wholly behind the plane the sub-rays start from are never within the footprint
+  // (RayFootprint::start_half_space): a shadow ray skips the surface it leaves. A box is behind
+  // when its corner farthest along the plane's normal is.
+  StartHalfSpace start;
+  const bool has_start = footprint.start_half_space(ray.o, ray.d, start);
+  auto wholly_behind = [&](const Slab4Boxes& b, int k) {
+    const float x = start.n.x > 0 ? b.hi_x[k] : b.lo_x[k];
+    const float y = start.n.y > 0 ? b.hi_y[k] : b.lo_y[k];
+    const float z = start.n.z > 0 ? b.hi_z[k] : b.lo_z[k];
+    return start.excludes(start.at(Vec3f{x, y, z}));
+  };
   uint64_t visited = 0;
   while (!queue.empty()) {
     const BvhQueueEntry e = queue.back();
@@ -189,6 +200,7 @@ uint64_t Bvh::footprint_walk(Ray& ray, const RayFootprint& footprint, BvhScratch
     unsigned mask = hit.mask & node.valid;
     for (int k = 0; k < 4; ++k) {
       if (!((mask >> k) & 1)) continue;
+      if (has_start && wholly_behind(node.boxes, k)) continue;
       float grow = std::min(e.grow, reach_over(hit.t0[k], hit.t1[k]));
       bvh_detail::queue_insert(queue, {hit.t0[k], grow, node.child[k], node.count[k]});
     }

@@ -40,6 +40,18 @@ struct ReachBound {
   bool grows() const { return apex_t <= 0.0f; }
 };
 
+// The half-space n . x > offset + margin, which the sub-rays of a footprint stay in for t > 0
+// (RayFootprint::start_half_space). `margin` (rounding: the plane is known to about 1e-5 of the
+// coordinates' size) puts what merely touches the plane, as the pieces of a mesh around a point
+// on it do, outside: a sub-ray meets it only at its own start.
+struct StartHalfSpace {
+  Vec3f n;
+  float offset = 0, margin = 0;
+  float at(const Vec3f& x) const { return dot(n, x) - offset; }
+  // Whether points whose largest value of at() is `highest` can be met by no sub-ray.
+  bool excludes(float highest) const { return !(highest > margin); }
+};
+
 struct RayFootprint {
   Vec3f dox, doy, ddx, ddy;
   // Floor on the footprint size, so that r -> 0 (a pinhole at its apex, a ray without
@@ -64,6 +76,34 @@ struct RayFootprint {
     const float t_apex = form == FootprintForm::Pencil ? apex_t : 0.0f;
     const float a = 0.5f * (length(dox + ddx * t_apex) + length(doy + ddy * t_apex));
     return {a, spread, t_apex};
+  }
+  // The half-space every sub-ray of the ray (origin o, direction d) stays in for t >= 0, when
+  // there is one: the sub-rays start on the plane through o spanned by dox and doy, and when
+  // every sub-ray direction d + u ddx + v ddy (|u|, |v| <= 1/2) leaves that plane to the same
+  // side, nothing strictly behind it is within the footprint. A shadow ray's sub-rays start on
+  // the receiver's tangent plane and run to a light in front of it: the surface around the
+  // receiving point, which curves away behind that plane, is never in their way (nor found by a
+  // walk that asks). False when the origins span no plane (camera pencils) or the directions
+  // do not all leave it to one side (a light behind or in the plane, most reflected rays).
+  bool start_half_space(const Vec3f& o, const Vec3f& d, StartHalfSpace& out) const {
+    const Vec3f n = cross(dox, doy);
+    const float leave = dot(n, d), spread = 0.5f * (std::abs(dot(n, ddx)) + std::abs(dot(n, ddy)));
+    if (!(std::abs(leave) > spread) || !std::isfinite(leave)) return false;
+    out.n = leave > 0 ? n : -n;
+    out.offset = dot(out.n, o);
+    const float size = std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z), 1.0f});
+    out.margin = 1e-5f * size * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
+    return true;
+  }
+  // The footprint of the sub-rays (u, v) in [-su/2, su/2] x [-sv/2, sv/2]: a part of this one
+  // around its ray, of the same form.
+  RayFootprint part(float su, float sv) const {
+    RayFootprint f = *this;
+    f.dox = dox * su;
+    f.ddx = ddx * su;
+    f.doy = doy * sv;
+    f.ddy = ddy * sv;
+    return f;
   }
   // Upper bound on how far from the ray a strand can be and still cover part of the footprint
   // at parameter t (reaches the footprint's corners).
