@@ -7,6 +7,8 @@
 #include "core/geometry/curves/curve_set.h"
 #include "core/geometry/surfaces/surface_set.h"
 #include "core/math/vec.h"
+#include "integrator/fragment.h"
+#include "integrator/shading_sites.h"
 
 #include <algorithm>
 #include <array>
@@ -17,83 +19,6 @@
 #include <vector>
 
 namespace darc {
-
-// The depth of a plane along the footprint's sub-rays, to first order about the footprint's
-// centre: t(u, v) = t0 + du u + dv v. Not `valid` where the plane is seen edge-on.
-struct DepthPlane {
-  float t0 = 0, du = 0, dv = 0;
-  bool valid = false;
-  float at(float u, float v) const { return t0 + du * u + dv * v; }
-};
-
-struct Fragment {
-  float t = 0;
-  float coverage = 1;        // fraction of the footprint covered
-  uint32_t strand = kNoStrand;  // curve strand id; kNoStrand for surfaces
-  uint32_t primitive = 0;    // grid primitive index (what to shade)
-  float u = 0;               // along the curve segment (curves only)
-  // Set when two fragments were merged because the list was full: their light and opacity
-  // are then already shaded, per footprint point, in the A-buffer's merged record `merged`.
-  bool preshaded = false;
-  int merged = -1;
-  // Where in the footprint the fragment lies (8 x 8 points); the scalar coverage says how much.
-  CoverageMask mask = kFullMask;
-  // Surfaces: the footprint point whose sub-ray hit is shaded (-1: the ray itself).
-  int surface_point = -1;
-  // Curves: from the ray to the strand axis at the shading point. Decides which of a strand's
-  // equally covering pieces is shaded: the nearest is where the strand's closest approach is.
-  float distance = 0;
-  // Surfaces with analytic coverage: shaded where the sub-ray (sub_u, sub_v) meets them (the
-  // centroid of what they cover).
-  bool at_sub_ray = false;
-  float sub_u = 0, sub_v = 0;
-  // Strands shaded where they are seen (at_sub_ray): the share of the strand's coverage that is
-  // (its shadow rays leave a band that much narrower than the strand).
-  float seen_share = 1;
-  // Surfaces shaded where they are seen (ABuffer::at_visible_part): the footprint point
-  // (depth_u, depth_v) at which t is the depth (the one at (sub_u, sub_v) is on the plane through
-  // it with `normal`), and the part of the footprint, patch_u x patch_v around (sub_u, sub_v),
-  // that is the surface seen there (its shadow rays leave from that patch).
-  bool moved = false;
-  float depth_u = 0, depth_v = 0;
-  float patch_u = 1, patch_v = 1;
-  // Pieces of one surface (a mesh's triangles or faces): its layer key (kNoLayer: none) and the
-  // depth range of what the piece covers. Pieces of one layer whose ranges meet are one
-  // fragment: their coverages are areas of a partition and add up, their masks unite.
-  uint32_t layer = kNoLayer;
-  float t_near = 0, t_far = 0;
-  // Layer pieces: the piece's geometric normal; and, once pieces facing apart (a fold, a
-  // crease, a silhouette's turn) are in one fragment, the index of its shading sites in the
-  // A-buffer (-1: shaded at its own primitive and sub-ray alone).
-  Vec3f normal{};
-  int sites = -1;
-  bool covers_centre = false;  // the piece holds the footprint's centre (and is shaded there)
-  bool planar = false;         // a planar piece (a polygon, a mesh face, a triangle)
-  // Layer pieces: the depth of the piece's plane over the footprint, linear in the footprint's
-  // coordinates (DepthPlane): which of two overlapping pieces of one layer is in front.
-  DepthPlane plane{};
-};
-
-// Where a layer fragment is shaded when it holds pieces facing apart: each site is shaded and
-// their light is mixed by the coverage each brought, so a pixel across a fold gets both sides'
-// shading, as the stochastic hider's samples do (one site for all would make the fold a
-// staircase of whole pixels of one side's shade).
-struct ShadingSite {
-  uint32_t primitive = 0;
-  float t = 0, sub_u = 0, sub_v = 0;
-  Vec3f normal{};
-  float piece_coverage = 0;  // of the site's largest piece: where the site is shaded
-  float weight = 0;          // the coverage of every piece the site stands for
-  CoverageMask mask = 0;     // the footprint points its pieces are seen on
-  DepthPlane plane{};        // of its largest piece
-};
-inline constexpr int kMaxShadingSites = 4;
-// Pieces whose normals are closer than this (cosine, about 18 degrees) share a shading site.
-inline constexpr float kSiteNormalCos = 0.95f;
-struct ShadingSites {
-  std::array<ShadingSite, kMaxShadingSites> site;
-  int count = 0;
-};
 
 struct ShadedFragment {
   Vec3f Ci;  // premultiplied by Oi
@@ -312,51 +237,6 @@ class ABuffer {
     if (f.layer != kNoLayer) p.sites = sites;
   }
 
-  static ShadingSite own_site(const Fragment& f, float weight) {
-    return {f.primitive, f.t, f.sub_u, f.sub_v, f.normal, f.coverage, weight, f.mask, f.plane};
-  }
-
-  // The centre of the footprint points in `points` (not empty), in footprint coordinates.
-  static void points_centre(CoverageMask points, float& u, float& v) {
-    int n = 0, su = 0, sv = 0;
-    for (; points != 0; points &= points - 1, ++n) {
-      const int b = std::countr_zero(points);
-      su += b % kMaskSide, sv += b / kMaskSide;
-    }
-    constexpr float step = 1.0f / kMaskSide;
-    u = (float(su) / float(n) + 0.5f) * step - 0.5f;
-    v = (float(sv) / float(n) + 0.5f) * step - 0.5f;
-  }
-
-  // Piece f joins sites facing apart: on the points where it overlaps a site, the nearer of the
-  // two is seen (their planes compared at the overlap's centre), and the other loses those
-  // points' share of its weight. Returns the weight f brings: its coverage on the points it is
-  // seen on. Without this the first piece found kept the points: at a closed mesh's silhouette
-  // the pieces behind it (a box's back faces, under its top) shaded the edge pixels as they
-  // would be lit (a box's lit top edge 0.31 against the reference's 0.81).
-  static float claim_points(ShadingSites& sites, Fragment& f) {
-    const int k = mask_count(f.mask);
-    if (k == 0) return 0;
-    CoverageMask seen = f.mask;
-    for (int i = 0; i < sites.count; ++i) {
-      ShadingSite& s = sites.site[size_t(i)];
-      const CoverageMask overlap = s.mask & f.mask;
-      if (overlap == 0) continue;
-      float u, v;
-      points_centre(overlap, u, v);
-      const bool f_in_front = f.plane.valid && s.plane.valid && f.plane.at(u, v) < s.plane.at(u, v);
-      if (!f_in_front) {
-        seen &= ~overlap;
-        continue;
-      }
-      s.weight -= s.weight * float(mask_count(overlap)) / float(mask_count(s.mask));
-      s.mask &= ~overlap;
-    }
-    const float weight = f.coverage * float(mask_count(seen)) / float(k);
-    f.mask = seen;
-    return weight;
-  }
-
   // The shading sites of p after piece (or layer fragment) f, which adds `added` coverage,
   // joins it: -1 while all its pieces face alike.
   int absorb_sites(const Fragment& p, const Fragment& f, float added) {
@@ -386,31 +266,6 @@ class ABuffer {
     return index;
   }
 
-  // Adds `site` to the site facing most alike, or as a new one when none faces within
-  // kSiteNormalCos and there is room.
-  static void add_site(ShadingSites& sites, const ShadingSite& site) {
-    int best = 0;
-    float best_cos = -2;
-    for (int i = 0; i < sites.count; ++i) {
-      const float c = dot(sites.site[size_t(i)].normal, site.normal);
-      if (c > best_cos) best_cos = c, best = i;
-    }
-    if (best_cos < kSiteNormalCos && sites.count < kMaxShadingSites) {
-      sites.site[size_t(sites.count++)] = site;
-      return;
-    }
-    ShadingSite& into = sites.site[size_t(best)];
-    into.weight += site.weight;
-    into.mask |= site.mask;
-    if (site.piece_coverage > into.piece_coverage) {
-      const float weight = into.weight;
-      const CoverageMask mask = into.mask;
-      into = site;
-      into.weight = weight;
-      into.mask = mask;
-    }
-  }
-
   // Shades f: at its own primitive, or at each of its shading sites, mixed by their weights.
   template <class Shade>
   ShadedFragment shade_fragment(const Fragment& f, Shade& shade) const {
@@ -434,7 +289,11 @@ class ABuffer {
       g.sub_u = site.sub_u;
       g.sub_v = site.sub_v;
       g.sites = -1;
-      const ShadedFragment s = shade(g);
+      // Each site is shaded where its own points are seen, as a piece alone is.
+      g.normal = site.normal;
+      g.mask = site.mask;
+      Fragment seen;
+      const ShadedFragment s = shade(surface_at_visible_part(g, seen) ? seen : g);
       const float w = site.weight / total;
       mixed.Ci += s.Ci * w;
       mixed.Oi += s.Oi * w;

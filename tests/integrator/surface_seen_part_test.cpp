@@ -66,12 +66,13 @@ TEST(SurfaceSeenPart, ABoxOnAFloorIsShadedWhereItAndTheFloorAreSeen) {
   ASSERT_GT(channel_mean(reference, kRgba), 0.05) << "the box and the floor are lit";
   // Rows 40 to 55 hold the box's foot (its front edges on the floor) and nothing else of its
   // outline. Shaded at the footprints' centres the foot was a dark line (RMSE 0.024 there,
-  // stochastic 2x2 0.0032); shaded where seen, 0.0083.
-  EXPECT_LT(rows_rmse(distance, reference, 40, 56), 0.012) << "the foot";
+  // stochastic 2x2 0.0032); shaded where seen, 0.0053.
+  EXPECT_LT(rows_rmse(distance, reference, 40, 56), 0.008) << "the foot";
   // The box's own faces meet at its outline: the faces behind (under its lit top) shaded its top
-  // edges as their own (0.75 against 1.12) when they were found first. Whole image: 0.019 before,
-  // 0.0040 now (stochastic 2x2: 0.0021).
-  EXPECT_LT(compare(distance, reference, kRgba).rmse, 0.008) << "the whole image";
+  // edges as their own (0.75 against 1.12) when they were found first, and faces meeting at an
+  // edge were shaded at their own pieces' centres, not where seen. Whole image (R, G, B): 0.019
+  // before, 0.0026 now (stochastic 2x2: 0.0021; the box as six separate polygons: 0.0032).
+  EXPECT_LT(compare(distance, reference, kRgba).rmse, 0.0035) << "the whole image";
 }
 
 // The half-space a shadow ray's sub-rays stay in: they start on the receiver's tangent plane
