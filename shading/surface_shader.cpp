@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <string>
 
 #include "core/scene/builder/shader_parameter_checks.h"
+#include "shading/chiang_hair.h"
 
 namespace darc {
 
@@ -183,6 +186,95 @@ class HairSurface : public SurfaceShader {
   PlasticSurface surface_fallback_;
 };
 
+// The Chiang et al. 2016 fibre (shading/chiang_hair.h), shaded across its width: a strand seen by
+// a hider is thinner than what a sample stands for, so its light is the mean over where rays
+// enter it (no noise from one entry point per sample, and both hiders see the same strand).
+// Under an RI light of colour Cl it sends pi * S * Cl: RI's diffuse() carries no 1/pi (a matte
+// surface of Kd 1 facing the light returns Cl), so Cl is an irradiance over pi, and a white fibre
+// beside a matte surface has the brightness their albedos give. Absorption from "sigma_a", else
+// "color", else melanin, else the strand's Cs as the colour (per vertex Cs gives a root-to-tip
+// gradient); ambient light is reflected in that colour. On surfaces (no tangent) it shades like
+// plastic with its defaults.
+class ChiangHairSurface : public SurfaceShader {
+ public:
+  ChiangHairSurface(const ChiangHairParams& params, bool absorption_given, float ka)
+      : hair_(params), absorption_given_(absorption_given), ka_(ka),
+        colour_(ChiangHair::reflectance_from_sigma_a(params.sigma_a, params.beta_n)), surface_fallback_(ParamList{}) {}
+  SurfaceLobes lobes(const ShadingPoint& sp) const override {
+    if (length_squared(sp.dPdv) == 0.0f) return surface_fallback_.lobes(sp);
+    SurfaceLobes l = base_lobes(sp);
+    l.ambient = (absorption_given_ ? colour_ : clamp01(sp.Cs)) * ka_;
+    l.lit = true;
+    return l;
+  }
+  Vec3f response(const ShadingPoint& sp, const SurfaceLobes& l, const LightContribution& lc) const override {
+    const Vec3f T = normalize(sp.dPdv);
+    if (length_squared(T) == 0.0f) return surface_fallback_.response(sp, l, lc);
+    const Vec3f sigma_a = absorption_given_ ? hair_.params().sigma_a
+                                            : ChiangHair::sigma_a_from_reflectance(sp.Cs, hair_.params().beta_n);
+    const Vec3f S = hair_.scattering_across(T, -sp.I, lc.L, sigma_a);
+    return mul(S, lc.Cl) * std::numbers::pi_v<float>;
+  }
+
+ private:
+  static Vec3f clamp01(const Vec3f& c) {
+    return {std::clamp(c.x, 0.0f, 1.0f), std::clamp(c.y, 0.0f, 1.0f), std::clamp(c.z, 0.0f, 1.0f)};
+  }
+  ChiangHair hair_;
+  bool absorption_given_;
+  float ka_;
+  Vec3f colour_;
+  PlasticSurface surface_fallback_;
+};
+
+// Surface "chianghair" with pbrt-v4's hair material parameters (docs/parameters.md): the
+// absorption's sources in precedence sigma_a > color > melanin > Cs, each one ignored said once.
+std::unique_ptr<SurfaceShader> make_chiang_hair(const ParamList& p, const SourceLoc& loc, Diagnostics& diag) {
+  ChiangHairParams c;
+  auto in_range = [&](const char* name, float fallback, float lo, float hi) {
+    const float v = p.get_float(name, fallback);
+    if (v >= lo && v <= hi) return v;
+    const float clamped = std::clamp(std::isfinite(v) ? v : fallback, lo, hi);
+    diag.warning_once(std::string("chianghair:") + name, loc, "Surface",
+                      std::string("chianghair \"") + name + "\" " + std::to_string(v) + " outside [" + std::to_string(lo) +
+                          ", " + std::to_string(hi) + "]: using " + std::to_string(clamped));
+    return clamped;
+  };
+  c.beta_m = in_range("beta_m", 0.3f, 0.01f, 1.0f);
+  // darc's own: the R lobe's longitudinal standard deviation in degrees (what PxrMarschnerHair's
+  // specularConeAngleR gives), when beta_m is not given.
+  if (p.find("coneangle")) {
+    if (p.find("beta_m"))
+      diag.warning_once("chianghair-ignored:coneangle", loc, "Surface",
+                        "chianghair: \"coneangle\" ignored: \"beta_m\" given");
+    else
+      c.beta_m = ChiangHair::beta_m_for_cone_angle(in_range("coneangle", 8.0f, 0.0f, 90.0f));
+  }
+  c.beta_n = in_range("beta_n", 0.3f, 0.01f, 1.0f);
+  c.eta = in_range("eta", 1.55f, 1.0001f, 10.0f);
+  c.alpha_degrees = in_range("alpha", 2.0f, -90.0f, 90.0f);
+  const char* colour_name = p.find("color") ? "color" : p.find("reflectance") ? "reflectance" : nullptr;
+  const bool melanin = p.find("eumelanin") || p.find("pheomelanin");
+  auto ignored = [&](const std::string& what, const std::string& why) {
+    diag.warning_once("chianghair-ignored:" + what, loc, "Surface", "chianghair: " + what + " ignored: " + why + " given");
+  };
+  bool given = true;
+  if (p.find("sigma_a")) {
+    c.sigma_a = param_color(p, "sigma_a", c.sigma_a);
+    c.sigma_a = {std::max(c.sigma_a.x, 0.0f), std::max(c.sigma_a.y, 0.0f), std::max(c.sigma_a.z, 0.0f)};
+    if (colour_name) ignored(std::string("\"") + colour_name + "\"", "\"sigma_a\"");
+    if (melanin) ignored("melanin", "\"sigma_a\"");
+  } else if (colour_name) {
+    c.sigma_a = ChiangHair::sigma_a_from_reflectance(param_color(p, colour_name, {1, 1, 1}), c.beta_n);
+    if (melanin) ignored("melanin", std::string("\"") + colour_name + "\"");
+  } else if (melanin) {
+    c.sigma_a = ChiangHair::sigma_a_from_melanin(p.get_float("eumelanin", 0), p.get_float("pheomelanin", 0));
+  } else {
+    given = false;  // the colour is Cs, per point
+  }
+  return std::make_unique<ChiangHairSurface>(c, given, p.get_float("Ka", 1));
+}
+
 // PRMan/Aqsis defaultsurface: a headlight look that shows geometry without any light:
 // Ci = Os * Cs * (Ka + Kd * (N.I)^2) with Ka = 0.2, Kd = 0.8.
 class DefaultSurface : public SurfaceShader {
@@ -244,7 +336,8 @@ std::unique_ptr<SurfaceShader> make_surface_shader(const std::string& name, cons
   if (name == "shinymetal") return std::make_unique<MetalSurface>(params, 1.0f);
   if (name == "mirror") return std::make_unique<MirrorSurface>(params);
   if (name == "glass") return std::make_unique<GlassSurface>(params);
-  if (name == "hair") return std::make_unique<HairSurface>(params);
+  if (name == "hair" || name == "kajiyakay") return std::make_unique<HairSurface>(params);
+  if (name == "chianghair") return make_chiang_hair(params, loc, diag);
   if (name != "defaultsurface")
     diag.warning_once("surface:" + name, loc, "Surface", "unknown surface shader \"" + name + "\": using defaultsurface");
   return std::make_unique<DefaultSurface>();

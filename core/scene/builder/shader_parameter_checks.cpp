@@ -47,6 +47,14 @@ constexpr ParameterRule kGlass[] = {{"Ka", Range::NonNegative},       {"Kd", Ran
                                     {"specularcolor", Range::Triple}, {"Kr", Range::NonNegative},
                                     {"Kt", Range::NonNegative},       {"eta", Range::Eta},
                                     {"transmitcolor", Range::Triple}};
+// chianghair's numbers (shading/surface_shader.cpp clamps beta_m, beta_n, eta and alpha to the
+// model's ranges, with its own warnings).
+constexpr ParameterRule kChiangHair[] = {{"Ka", Range::NonNegative},        {"sigma_a", Range::Triple},
+                                         {"color", Range::Triple},          {"reflectance", Range::Triple},
+                                         {"eumelanin", Range::NonNegative}, {"pheomelanin", Range::NonNegative},
+                                         {"beta_m", Range::Any},            {"beta_n", Range::Any},
+                                         {"eta", Range::Any},               {"alpha", Range::Any},
+                                         {"coneangle", Range::Any}};
 // Also the parameters every AreaLightSource is drawn with, whatever its shader.
 constexpr ParameterRule kAmbientLight[] = {{"intensity", Range::Any}, {"lightcolor", Range::Triple}};
 constexpr ParameterRule kDistantLight[] = {
@@ -72,7 +80,7 @@ constexpr ShaderRules kSurfaces[] = {
     {"constant", {}},      {"defaultsurface", {}},       {"matte", kMatte},
     {"plastic", kPlastic}, {"paintedplastic", kPlastic}, {"hair", kPlastic},
     {"metal", kMetal},     {"shinymetal", kMetal},       {"mirror", kMirror},
-    {"glass", kGlass},
+    {"glass", kGlass},     {"kajiyakay", kPlastic},      {"chianghair", kChiangHair},
 };
 constexpr ShaderRules kLights[] = {
     {"ambientlight", kAmbientLight},  {"distantlight", kDistantLight, true}, {"shadowdistant", kDistantLight, true},

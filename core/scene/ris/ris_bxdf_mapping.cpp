@@ -18,13 +18,9 @@ constexpr Vec3f kPxrDisneyBaseColor{0.2f, 0.5f, 0.8f};
 constexpr float kPxrDisneySpecular = 0.5f;
 constexpr float kPxrDisneyRoughness = 0.25f;
 constexpr Vec3f kPxrDiffuseColor{0.5f, 0.5f, 0.5f};
-// darc's hair shader's own defaults (shading/surface_shader.cpp), kept where PxrMarschnerHair
-// gives nothing: its lobes are not Kajiya-Kay's.
-constexpr float kHairKd = 0.6f, kHairKs = 0.35f, kHairRoughness = 0.15f;
-// A Kajiya-Kay lobe cos^n falls to half its peak at angle a when n = ln(1/2) / ln(cos a); this is
-// how PxrMarschnerHair's specularConeAngleR (degrees) becomes roughness = 1/n. Cone angles are
-// kept within (0, 89] degrees so that the exponent stays finite and positive.
-constexpr float kMinConeDegrees = 0.01f, kMaxConeDegrees = 89;
+// PxrMarschnerHair's defaults for what maps onto chianghair (the RenderMan 22 plugin defaults,
+// ../shared/docs/lookdev.md §1.1): an R cone of 8 degrees, a -3 degree offset, index 1.55.
+constexpr float kMarschnerConeAngleR = 8, kMarschnerSpecularOffset = -3, kMarschnerIor = 1.55f;
 
 Param number_param(const std::string& name, float v) {
   Param p;
@@ -43,11 +39,6 @@ Param color_param(const std::string& name, Vec3f c) {
 }
 
 float luminance(Vec3f c) { return 0.3f * c.x + 0.6f * c.y + 0.1f * c.z; }  // Disney's tint weights
-
-float cone_roughness(float cone_degrees) {
-  const float a = std::clamp(cone_degrees, kMinConeDegrees, kMaxConeDegrees) * float(M_PI / 180);
-  return std::log(std::cos(a)) / std::log(0.5f);
-}
 
 RisSurface pxr_surface(RisParamReader& r) {
   RisSurface s{"plastic", {}, r.color("diffuseColor", kPxrSurfaceDiffuseColor), {}};
@@ -73,17 +64,20 @@ RisSurface pxr_disney(RisParamReader& r) {
 }
 
 RisSurface pxr_marschner_hair(RisParamReader& r) {
-  RisSurface s{"hair", {}, std::nullopt, {}};
+  // Onto the Chiang et al. fibre (lookdev.md §1.6): the R cone's angle is its longitudinal
+  // standard deviation (chianghair's "coneangle" finds beta_m for it), the offset is the scales'
+  // tilt with the opposite sign (negative toward the root in Marschner's convention, positive in
+  // pbrt's), the index as it is. The colour becomes Cs, which chianghair inverts to an absorption.
+  // Per-lobe gains and colours are not read (the model's lobes are not separately scaled: that
+  // would break its energy balance), so they are reported as parameters darc does not use.
+  RisSurface s{"chianghair", {}, std::nullopt, {}};
   // The diffuse colour, else the colour of a PxrHairColor feeding another input (its outputs
-  // are one colour here), else Cs as it is: darc's hair shader takes its colour from Cs.
+  // are one colour here), else Cs as it is.
   s.color = r.optional_color("diffuseColor");
   if (!s.color) s.color = r.any_pattern_color();
-  s.params.params = {number_param("Kd", r.number("diffuseGain", kHairKd)),
-                     number_param("Ks", r.number("specularGainR", kHairKs)),
-                     color_param("specularcolor", r.color("specularColorR", {1, 1, 1}))};
-  const float roughness =
-      r.has("specularConeAngleR") ? cone_roughness(r.number("specularConeAngleR", 0)) : kHairRoughness;
-  s.params.params.push_back(number_param("roughness", roughness));
+  s.params.params = {number_param("coneangle", r.number("specularConeAngleR", kMarschnerConeAngleR)),
+                     number_param("alpha", -r.number("specularOffset", kMarschnerSpecularOffset)),
+                     number_param("eta", r.number("specularIor", kMarschnerIor))};
   return s;
 }
 

@@ -1,6 +1,6 @@
 // RenderMan 21+ Bxdf requests mapped to darc's surface shaders (shading/surface_shader.h), with
 // their main parameters: PxrSurface and PxrDisney -> plastic, PxrDiffuse -> matte, PxrConstant
-// -> constant, PxrMarschnerHair -> hair; any other Bxdf -> defaultsurface. A Bxdf's colour
+// -> constant, PxrMarschnerHair -> chianghair; any other Bxdf -> defaultsurface. A Bxdf's colour
 // (diffuse, base or emission colour) becomes Cs, as a Color request would make it. Parameters
 // darc has no use for are listed in one warning per distinct request; README has the table.
 #pragma once

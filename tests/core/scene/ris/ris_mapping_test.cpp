@@ -170,14 +170,20 @@ TEST(RisPattern, PxrHairColorDrivesTheHairShadersColour) {
 Bxdf "PxrMarschnerHair" "h" "reference color diffuseColor" ["hc:resultDiffuse"] "float diffuseGain" [0.8]
   "float specularGainR" [0.5] "color specularColorR" [1 0.9 0.8] "float specularConeAngleR" [60])",
                                      &b);
-  EXPECT_EQ(m.surface, "hair");
+  // Onto the Chiang et al. fibre: the colour as Cs (chianghair inverts it to an absorption), the R
+  // cone's angle as chianghair's coneangle, RenderMan's default offset (-3 degrees) as the
+  // scales' tilt (+3) and its default index.
+  EXPECT_EQ(m.surface, "chianghair");
   EXPECT_EQ(m.color, melanin_hair_color(0.4f, 0.7f));
-  EXPECT_EQ(param(m.surface_params, "Kd"), 0.8f);
-  EXPECT_EQ(param(m.surface_params, "Ks"), 0.5f);
-  EXPECT_EQ(param3(m.surface_params, "specularcolor"), (Vec3f{1, 0.9f, 0.8f}));
-  // cos^n(60 degrees) = 1/2 at n = 1: roughness 1.
-  EXPECT_NEAR(param(m.surface_params, "roughness"), 1.0f, 1e-5f);
-  EXPECT_TRUE(warnings(b).empty()) << warnings(b)[0].str();
+  EXPECT_EQ(param(m.surface_params, "coneangle"), 60.0f);
+  EXPECT_EQ(param(m.surface_params, "alpha"), 3.0f);
+  EXPECT_EQ(param(m.surface_params, "eta"), 1.55f);
+  // The per-lobe gains and colours have no place in an energy-conserving fibre: said once.
+  const auto w = warnings(b);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_TRUE(contains(w[0].message, "diffuseGain")) << w[0].message;
+  EXPECT_TRUE(contains(w[0].message, "specularGainR")) << w[0].message;
+  EXPECT_TRUE(contains(w[0].message, "specularColorR")) << w[0].message;
 }
 
 TEST(RisPattern, AHairColourThroughTheSpecularInputsOnlyStillColoursTheHair) {
