@@ -2,9 +2,51 @@
 
 #include "core/scene/ray_differentials.h"
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
 namespace darc {
 
 namespace {
+
+// The strata of an area light's samples: nx x ny cells (nx the rounded square root of the count
+// asked for), each sampled at its centre moved by the rotation, wrapped into [0, 1).
+class LightSampleGrid {
+ public:
+  explicit LightSampleGrid(int n) : nx_(std::max(1, int(std::lround(std::sqrt(double(n)))))), ny_((n + nx_ - 1) / nx_) {}
+  int count() const { return nx_ * ny_; }
+  template <class Rotation>
+  void point(int k, const Rotation& r, float& u0, float& u1) const {
+    u0 = wrap((float(k % nx_) + 0.5f) / float(nx_) + r.u0);
+    u1 = wrap((float(k / nx_) + 0.5f) / float(ny_) + r.u1);
+  }
+
+ private:
+  static float wrap(float u) {
+    u -= std::floor(u);
+    return u < 1.0f ? u : 0.0f;
+  }
+  int nx_, ny_;
+};
+
+// Two numbers in [0, 1) from a point's coordinates and a light's index (splitmix64 finaliser).
+struct LightSampleRotation {
+  float u0 = 0, u1 = 0;
+  LightSampleRotation(const Vec3f& P, uint32_t light) {
+    uint64_t h = mix((uint64_t(std::bit_cast<uint32_t>(P.x)) << 32) ^ std::bit_cast<uint32_t>(P.y));
+    h = mix(h ^ (uint64_t(std::bit_cast<uint32_t>(P.z)) << 32) ^ light);
+    u0 = float(h >> 40) * 0x1.0p-24f;
+    u1 = float((h >> 16) & 0xFFFFFF) * 0x1.0p-24f;
+  }
+  static uint64_t mix(uint64_t z) {
+    z += 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+};
 
 bool worth_tracing(float weight, const SecondaryRaySettings& s) {
   return s.contribution_threshold <= 0 || weight >= s.contribution_threshold;
@@ -32,26 +74,53 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
   // Half the footprint's width at P: light edges are filtered over it (exact rays: none).
   const float footprint_radius =
       footprint ? 0.5f * std::sqrt(std::max(length_squared(at.dPdx), length_squared(at.dPdy))) : 0.0f;
+  // The light of one direction toward `light`, whose whole contribution that direction
+  // estimates, times `share` (an area light's sample: 1 / samples), through its shadow ray when
+  // it casts shadows. An area light's samples are pruned (and stop) by the light's whole
+  // contribution as each estimates it, not by their share of it: many samples of a light that
+  // matters are each small, and pruning them one by one took the whole light as unoccluded.
+  auto add_light = [&](const Light& light, const LightContribution& lc, float share) {
+    const Vec3f whole = shader.response(sp, lobes, lc);
+    const Vec3f unoccluded = whole * share;
+    if (!light.casts_shadows() || max_component(unoccluded) <= 0) {
+      c += unoccluded;
+      return;
+    }
+    const float shadow_weight = pruning ? weight.get() * max_component(mul(lobes.Oi, whole)) : 1.0f;
+    if (pruning && !worth_tracing(shadow_weight, settings)) {
+      counters.count_pruned(SecondaryKind::Shadow);
+      c += unoccluded;  // pruned: the light taken as unoccluded
+      return;
+    }
+    counters.count_traced(SecondaryKind::Shadow);
+    c += mul(unoccluded, tracer.shadow_transmittance(at, lc.L, lc.distance, footprint, PathState{depth, shadow_weight}));
+  };
+  uint32_t light_index = 0;
   for (const Light* light : shading.lights(at.material)) {
+    ++light_index;
+    if (const int n = light->samples(); n > 0) {
+      if (!lobes.lit) continue;
+      // A grid of strata over the light's parameters, rotated by an amount drawn from the point
+      // and the light (Cranley-Patterson): neighbouring points see different points of the light,
+      // so the light's shape does not print as a pattern of copies, and the result depends on
+      // nothing but the point (the same for any thread count or tile order).
+      const LightSampleGrid grid(n);
+      const LightSampleRotation rotation(sp.P, light_index);
+      const float share = 1.0f / float(grid.count());
+      for (int k = 0; k < grid.count(); ++k) {
+        float u0, u1;
+        grid.point(k, rotation, u0, u1);
+        if (light->sample(sp.P, u0, u1, lc)) add_light(*light, lc, share);
+      }
+      continue;
+    }
     if (!light->illuminate(sp.P, lc, footprint_radius)) continue;
     if (lc.ambient) {
       c += mul(lobes.ambient, lc.Cl);
       continue;
     }
     if (!lobes.lit) continue;
-    Vec3f unoccluded = shader.response(sp, lobes, lc);
-    if (!light->casts_shadows() || max_component(unoccluded) <= 0) {
-      c += unoccluded;
-      continue;
-    }
-    const float shadow_weight = pruning ? weight.get() * max_component(mul(lobes.Oi, unoccluded)) : 1.0f;
-    if (pruning && !worth_tracing(shadow_weight, settings)) {
-      counters.count_pruned(SecondaryKind::Shadow);
-      c += unoccluded;  // pruned: the light taken as unoccluded
-      continue;
-    }
-    counters.count_traced(SecondaryKind::Shadow);
-    c += mul(unoccluded, tracer.shadow_transmittance(at, lc.L, lc.distance, footprint, PathState{depth, shadow_weight}));
+    add_light(*light, lc, 1.0f);
   }
 
   const bool may_bounce = depth < settings.max_depth;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/scene/builder/shader_parameter_checks.h"
+#include "shading/area_lights.h"
 
 namespace darc {
 
@@ -21,6 +22,11 @@ Vec3d param_point(const ParamList& p, const char* name, Vec3d fallback) {
   if (!x || x->floats.size() < 3) return fallback;
   return {x->floats[0], x->floats[1], x->floats[2]};
 }
+
+class NoLight : public Light {
+ public:
+  bool illuminate(const Vec3f&, LightContribution&, float) const override { return false; }
+};
 
 class AmbientLight : public Light {
  public:
@@ -114,6 +120,19 @@ std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& de
     Vec3f from_w = Vec3f(d.shader_to_world.transform_point(from));
     Vec3f to_w = Vec3f(d.shader_to_world.transform_point(to));
     std::string kind = d.shader;
+    if (d.geometry) {
+      // An AreaLightSource: its shape is scene geometry (shading/geometry_light.h, which
+      // SceneShading makes); alone it sends nothing.
+      lights.push_back(std::make_unique<NoLight>());
+      continue;
+    }
+    AreaShape shape;
+    if (area_shape_of(kind, shape)) {
+      const int samples = int(p.get_float("nsamples", float(kDefaultAreaLightSamples)));
+      lights.push_back(make_area_light(shape, d.shader_to_world, c, std::clamp(samples, 1, 4096)));
+      lights.back()->set_casts_shadows(d.casts_shadows);
+      continue;
+    }
     if (kind == "shadowspot") kind = "spotlight";
     if (kind == "shadowpoint") kind = "pointlight";
     if (kind == "shadowdistant") kind = "distantlight";

@@ -27,6 +27,12 @@ class Light {
   // gives what many exact samples inside it would.
   virtual bool illuminate(const Vec3f& P, LightContribution& out, float footprint_radius) const = 0;
   bool illuminate(const Vec3f& P, LightContribution& out) const { return illuminate(P, out, 0.0f); }
+  // Lights with extent (shading/area_lights.h) are sampled instead: samples() points per shading
+  // point, each from sample(P, u0, u1) with (u0, u1) in [0, 1)^2, whose Cl is the light's whole
+  // contribution as that one point estimates it (the caller averages them). 0: a delta light,
+  // illuminate() alone.
+  virtual int samples() const { return 0; }
+  virtual bool sample(const Vec3f&, float, float, LightContribution&) const { return false; }
   // Whether occluders between P and the light are looked for (LightDesc::casts_shadows).
   bool casts_shadows() const { return casts_shadows_; }
   void set_casts_shadows(bool on) { casts_shadows_ = on; }
@@ -40,6 +46,8 @@ class Light {
 // "shadowname" (ray-traced: LightDesc::casts_shadows). Unknown light shaders get one
 // warning each and fall back: to a spotlight when they have "to" and "coneangle", to a point
 // light when they have "from", else to a distant light along +z (documented in README).
+// "rectlight", "disklight" and "spherelight" are darc's area lights (shading/area_lights.h), with
+// "intensity", "lightcolor" and "nsamples".
 std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& descs, Diagnostics& diag);
 
 }  // namespace darc

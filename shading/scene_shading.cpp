@@ -1,8 +1,13 @@
 #include "shading/scene_shading.h"
 
+#include "shading/geometry_light.h"
+
 namespace darc {
 
 SceneShading::SceneShading(const Scene& scene, Diagnostics& diag) : lights_(make_lights(scene.lights, diag)) {
+  // AreaLightSource lights take their shape from the scene's geometry.
+  for (uint32_t i = 0; i < scene.lights.size() && i < lights_.size(); ++i)
+    if (scene.lights[i].geometry) lights_[i] = make_geometry_light(scene, i, diag);
   surfaces_.reserve(scene.materials.size());
   light_lists_.reserve(scene.materials.size());
   for (const Material& m : scene.materials) {

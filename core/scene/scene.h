@@ -42,6 +42,8 @@ struct Material {
   std::vector<uint32_t> lights;  // indices into Scene::lights that illuminate this primitive
   std::string emissive_area_light;  // AreaLightSource shader the geometry belongs to, if any
   ParamList area_light_params;
+  // The Scene::lights index of that area light: the geometry is its shape (-1: none).
+  int area_light = -1;
   Transmission transmission = Transmission::Os;
 
   // Sides 1: true when a surface whose own normal (orientation not applied) is `n` is seen
@@ -59,6 +61,8 @@ struct LightDesc {
   // Ray-traced shadows: a "shadowname" parameter (any name; "raytrace" or a shadow-map file we
   // trace instead), or `Attribute "light" "shadows" "on"` when the light was declared.
   bool casts_shadows = false;
+  // An AreaLightSource: its shape is the geometry whose Material::area_light is this light.
+  bool geometry = false;
 };
 
 // Everything the RIB options say about the image, the sampling and the output.

@@ -12,7 +12,9 @@ std::string frame(const std::string& display, const std::string& light, const st
          "\" \"file\" \"rgba\"\n"
          "Format 48 36 1\nPixelSamples 2 2\nProjection \"perspective\" \"fov\" [40]\nTranslate 0 0 5\n"
          "WorldBegin\n"
-         "  TransformBegin\n    Rotate 150 0 1 0\n    Rotate 30 1 0 0\n    " +
+         // The last rotation turns the light's +z (where RenderMan's lights shine) toward the
+         // sphere's side the camera sees, as hand-written RIS scenes do.
+         "  TransformBegin\n    Rotate 150 0 1 0\n    Rotate 30 1 0 0\n    Rotate 180 0 1 0\n    " +
          light +
          "\n  TransformEnd\n"
          "  AttributeBegin\n    " +
@@ -30,7 +32,8 @@ double mean_red(const Pixels& p) {
 
 TEST(RisRender, PxrSurfaceUnderPxrDistantLightLooksLikeItsPlasticAndDistantlight) {
   ScratchDir dir("ris-render");
-  // intensity 1.5 * 2^1 = 3; the light travels along its -z axis.
+  // intensity 1.5 * 2^1 = 3; the light travels along its +z axis (RenderMan's Pxr lights emit
+  // toward their own +z: ../shared/docs/lookdev.md §2.2).
   write_file(dir / "ris.rib",
              frame("ris.exr",
                    "Light \"PxrDistantLight\" \"sun\" \"float intensity\" [1.5] \"float exposure\" [1] "
@@ -39,7 +42,7 @@ TEST(RisRender, PxrSurfaceUnderPxrDistantLightLooksLikeItsPlasticAndDistantlight
                    "\"color specularFaceColor\" [0.4 0.4 0.4] \"float specularRoughness\" [0.1]"));
   write_file(dir / "ri.rib", frame("ri.exr",
                                    "LightSource \"distantlight\" 1 \"intensity\" [3] \"lightcolor\" [1 0.9 0.8] "
-                                   "\"from\" [0 0 0] \"to\" [0 0 -1] \"string shadowname\" [\"raytrace\"]",
+                                   "\"from\" [0 0 0] \"to\" [0 0 1] \"string shadowname\" [\"raytrace\"]",
                                    "Color [0.8 0.3 0.2]\n    Surface \"plastic\" \"Ka\" [0.6] \"Kd\" [0.6] \"Ks\" [1] "
                                    "\"roughness\" [0.1] \"specularcolor\" [0.4 0.4 0.4]"));
   for (const char* hider : {"distance", "stochastic"}) {

@@ -49,6 +49,7 @@ struct Attributes {
   std::vector<uint32_t> lights_on;  // scene light indices
   std::string area_light;
   std::shared_ptr<const ParamList> area_light_params = std::make_shared<const ParamList>();
+  int area_light_index = -1;  // the Scene::lights index of the AreaLightSource above
   // Attribute "light" "shadows" (BMRT, Aqsis): lights declared while it is "on" cast ray-traced
   // shadows, as if they had a "shadowname".
   bool light_shadows = false;

@@ -406,12 +406,26 @@ void SceneBuilder::area_light_source(const std::string& name, const std::string&
   if (record([=](SceneBuilder& b) { b.area_light_source(name, handle, params, loc); })) return;
   auto checked =
       std::make_shared<const ParamList>(checked_shader_parameters("AreaLightSource", name, params, diag_, loc));
-  diag_.warning_once("arealight", loc, "AreaLightSource",
-                     "area lights do not illuminate other objects in darc: their geometry is drawn emissive");
   attributes_.area_light = name;
-  attributes_.area_light_params = std::move(checked);
-  light_handles_.erase(handle);  // a handle names the latest light declared with it
-  area_light_handles_.insert(handle);
+  attributes_.area_light_params = checked;
+  // The light, whose shape is the geometry that follows in this attribute block (RI Spec 3.2,
+  // RiAreaLightSource): on, and in the current light list, like a LightSource.
+  const bool shadows = light_casts_shadows(handle, params, loc);
+  LightDesc d{name, *checked, ctm_, loc, shadows};
+  d.geometry = true;
+  if (!in_world_) {
+    diag_.warning_once("prearealight", loc, "AreaLightSource",
+                       "area light declared before WorldBegin: it has no geometry there and lights nothing");
+    attributes_.area_light_index = -1;
+    area_light_handles_.insert(handle);
+    return;
+  }
+  scene_->lights.push_back(std::move(d));
+  const uint32_t idx = uint32_t(scene_->lights.size() - 1);
+  attributes_.area_light_index = int(idx);
+  light_handles_[handle] = idx;
+  area_light_handles_.erase(handle);
+  attributes_.lights_on.push_back(idx);
 }
 
 void SceneBuilder::illuminate(const std::string& handle, bool on, const SourceLoc& loc) {

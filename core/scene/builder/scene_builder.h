@@ -229,11 +229,12 @@ class SceneBuilder : public RiTarget {
     std::vector<uint32_t> lights;
     std::string area_light;
     std::shared_ptr<const ParamList> area_light_params;
+    int area_light_index;
     Transmission transmission;
     auto tie() const {
       return std::make_tuple(std::cref(surface), surface_params.get(), color.x, color.y, color.z, opacity.x, opacity.y, opacity.z, sides,
                       flip_normals, matte, std::cref(lights), std::cref(area_light),
-                             area_light_params.get(), transmission);
+                             area_light_params.get(), area_light_index, transmission);
     }
     bool operator<(const MaterialKey& o) const { return tie() < o.tie(); }
   };

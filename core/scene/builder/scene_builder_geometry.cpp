@@ -79,7 +79,7 @@ uint32_t SceneBuilder::make_material(const SourceLoc&) {
   MaterialKey key{attributes_.surface,  attributes_.surface_params, attributes_.color,
                   attributes_.opacity,  attributes_.sides,                flip,
                   attributes_.matte,    attributes_.lights_on,            attributes_.area_light,
-                  attributes_.area_light_params, attributes_.transmission};
+                  attributes_.area_light_params, attributes_.area_light_index, attributes_.transmission};
   auto found = material_ids_.find(key);
   if (found != material_ids_.end()) return found->second;
   Material m;
@@ -94,7 +94,9 @@ uint32_t SceneBuilder::make_material(const SourceLoc&) {
   m.lights = attributes_.lights_on;
   m.emissive_area_light = attributes_.area_light;
   m.area_light_params = *attributes_.area_light_params;
-  m.transmission = attributes_.transmission;
+  m.area_light = attributes_.area_light_index;
+  // An emitter does not shadow the light it sends: its own samples lie on it.
+  m.transmission = m.area_light >= 0 ? Transmission::Transparent : attributes_.transmission;
   scene_->materials.push_back(std::move(m));
   const uint32_t id = uint32_t(scene_->materials.size() - 1);
   material_ids_.emplace(std::move(key), id);

@@ -46,8 +46,8 @@ double sphere_radius(const Matrix4& m) { return kSphereLightRadius * std::cbrt(s
 RisLightMapping map_ris_light(const std::string& name, const ParamList& params, const Matrix4& light_to_world) {
   RisParamReader r(params, nullptr);
   RisLightMapping m;
-  const bool known =
-      name == "PxrDistantLight" || name == "PxrSphereLight" || name == "PxrRectLight" || name == "PxrDomeLight";
+  const bool known = name == "PxrDistantLight" || name == "PxrSphereLight" || name == "PxrRectLight" ||
+                     name == "PxrDiskLight" || name == "PxrDomeLight";
   if (!known) return m;
   // RenderMan's defaults: intensity 1, exposure 0, white, shadows on.
   const float scale = r.number("intensity", 1) * std::exp2(r.number("exposure", 0));
@@ -56,35 +56,30 @@ RisLightMapping map_ris_light(const std::string& name, const ParamList& params, 
   float intensity = scale;
   std::vector<Param> extra;
   if (name == "PxrDistantLight") {
+    // Along the light's +z, as RenderMan's own bridges place it (lookdev.md §2.2).
     m.shader = "distantlight";
-    extra = {triple_param("from", ParamType::Point, {0, 0, 0}), triple_param("to", ParamType::Point, {0, 0, -1})};
+    extra = {triple_param("from", ParamType::Point, {0, 0, 0}), triple_param("to", ParamType::Point, {0, 0, 1})};
   } else if (name == "PxrDomeLight") {
     m.shader = "ambientlight";
     m.casts_shadows = false;
     m.approximation = "an ambient light: no direction, no shadows";
   } else {
-    // With areaNormalize the light's power does not change with its size: the radiance is
-    // divided by the area.
+    // Shapes of radiance L (shading/area_lights.h). With areaNormalize the light's power does
+    // not change with its size: the radiance is divided by the area.
     const bool normalize = r.number("areaNormalize", 0) != 0;
+    double area = 0;
     if (name == "PxrRectLight") {
-      // A one-sided Lambertian square of radiance L and area A sends L * A * cos(angle) per
-      // unit solid angle: a spotlight of intensity L * A, cosine falloff, 90-degree cone.
-      const double area = rect_area(light_to_world);
-      m.shader = "spotlight";
-      intensity = float(normalize || !(area > 0) ? scale : scale * area);
-      extra = {triple_param("from", ParamType::Point, {0, 0, 0}), triple_param("to", ParamType::Point, {0, 0, -1}),
-               number_param("coneangle", kPi / 2), number_param("conedeltaangle", 0),
-               number_param("beamdistribution", 1)};
-      m.approximation = "a spotlight at its centre with its power and a cosine falloff over its lit side";
+      m.shader = "rectlight";
+      area = rect_area(light_to_world);
+    } else if (name == "PxrDiskLight") {
+      m.shader = "disklight";
+      area = rect_area(light_to_world) * std::numbers::pi / 4;
     } else {
-      // A sphere of radiance L and radius r sends pi * L * r^2 per unit solid angle everywhere.
+      m.shader = "spherelight";
       const double radius = sphere_radius(light_to_world);
-      const double sphere_area = 4 * std::numbers::pi * radius * radius;
-      m.shader = "pointlight";
-      intensity = float(normalize || !(sphere_area > 0) ? scale / 4 : std::numbers::pi * scale * radius * radius);
-      extra = {triple_param("from", ParamType::Point, {0, 0, 0})};
-      m.approximation = "a point light at its centre with its power";
+      area = 4 * std::numbers::pi * radius * radius;
     }
+    if (normalize && area > 0) intensity = float(scale / area);
   }
   m.params.params = {number_param("intensity", intensity), triple_param("lightcolor", ParamType::Color, color)};
   m.params.params.insert(m.params.params.end(), extra.begin(), extra.end());

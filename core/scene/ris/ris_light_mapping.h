@@ -1,12 +1,10 @@
 // RenderMan 21+ Light requests mapped to darc's light shaders (shading/lights.h). A RIS light's
 // colour is intensity * 2^exposure * lightColor. PxrDistantLight -> distantlight along the
-// light's -z axis. PxrDomeLight -> ambientlight (no direction, no shadows; its environment map
-// is dropped). PxrRectLight (a unit square in its xy plane, emitting towards -z) and
-// PxrSphereLight (a sphere of diameter 1) are area lights; darc's area lights only draw their
-// geometry emissive and light nothing, so the rect becomes a spotlight at its centre with a
-// cosine (Lambertian) distribution over the -z hemisphere and the sphere a point light at its
-// centre, each with the light's power: exact far from the light, and the sphere's irradiance
-// is exact everywhere outside it. Their shapes are not drawn. README has the table.
+// light's +z axis (the side RenderMan's Pxr lights emit to: ../shared/docs/lookdev.md §2.2).
+// PxrRectLight, PxrDiskLight and PxrSphereLight -> darc's area lights rectlight, disklight and
+// spherelight (the same unit shapes, emitting toward +z where flat; shading/area_lights.h),
+// sampled with soft shadows; their shapes are not drawn. PxrDomeLight -> ambientlight (no
+// direction, no shadows; its environment map is dropped). README has the table.
 #pragma once
 
 #include <string>

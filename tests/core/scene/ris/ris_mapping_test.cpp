@@ -236,7 +236,7 @@ const LightDesc& only_light(const Built& b) {
 
 Built world(const std::string& body) { return build("WorldBegin\n" + body + "\nWorldEnd\n"); }
 
-TEST(RisLight, PxrDistantLightIsADistantLightAlongMinusZWithIntensityExposureAndColour) {
+TEST(RisLight, PxrDistantLightIsADistantLightAlongPlusZWithIntensityExposureAndColour) {
   Built b = world(R"(Rotate 90 0 1 0
 Light "PxrDistantLight" "sun" "float intensity" [3] "float exposure" [2] "color lightColor" [1 0.5 0.25])");
   const LightDesc& l = only_light(b);
@@ -245,41 +245,38 @@ Light "PxrDistantLight" "sun" "float intensity" [3] "float exposure" [2] "color 
   EXPECT_EQ(param3(l.params, "lightcolor"), (Vec3f{1, 0.5f, 0.25f}));
   const Vec3d from = l.shader_to_world.transform_point(Vec3d(param3(l.params, "from")));
   const Vec3d to = l.shader_to_world.transform_point(Vec3d(param3(l.params, "to")));
-  const Vec3d dir = to - from;  // Rotate 90 about y takes -z to -x
-  EXPECT_NEAR(dir.x, -1, 1e-9);
+  const Vec3d dir = to - from;  // Rotate 90 about y takes +z to +x: RenderMan's lights shine along their +z
+  EXPECT_NEAR(dir.x, 1, 1e-9);
   EXPECT_NEAR(dir.y, 0, 1e-9);
   EXPECT_NEAR(dir.z, 0, 1e-9);
   EXPECT_TRUE(l.casts_shadows) << "RenderMan lights cast shadows unless enableShadows is 0";
   EXPECT_FALSE(only_light(world(R"(Light "PxrDistantLight" "s" "int enableShadows" [0])")).casts_shadows);
 }
 
-TEST(RisLight, PxrSphereLightIsAPointLightWithTheSpheresPower) {
-  // Radiance 2 on a sphere of radius 0.5 * 3: pi * L * r^2 per unit solid angle.
+TEST(RisLight, PxrSphereLightIsASphereLightOfItsRadiance) {
   Built b = world(R"(Translate 1 2 3 Scale 3 3 3
 Light "PxrSphereLight" "bulb" "float intensity" [2])");
   const LightDesc& l = only_light(b);
-  EXPECT_EQ(l.shader, "pointlight");
-  EXPECT_NEAR(param(l.params, "intensity"), std::numbers::pi * 2 * 1.5 * 1.5, 1e-4);
-  const Vec3d at = l.shader_to_world.transform_point(Vec3d(param3(l.params, "from")));
-  EXPECT_NEAR(at.x, 1, 1e-9);
-  EXPECT_NEAR(at.y, 2, 1e-9);
-  EXPECT_NEAR(at.z, 3, 1e-9);
+  EXPECT_EQ(l.shader, "spherelight");
+  EXPECT_EQ(param(l.params, "intensity"), 2.0f);
+  EXPECT_TRUE(warnings(b, "Light").empty()) << "not an approximation any more";
+  // With areaNormalize the radiance is divided by the area 4 pi r^2 (r = 0.5 * 3).
   Built normalized = world(R"(Scale 3 3 3
 Light "PxrSphereLight" "bulb" "float intensity" [2] "int areaNormalize" [1])");
-  EXPECT_NEAR(param(only_light(normalized).params, "intensity"), 0.5, 1e-6) << "L / 4 whatever the size";
-  ASSERT_FALSE(warnings(b).empty());
-  EXPECT_EQ(warnings(b)[0].message, "PxrSphereLight is mapped to a point light at its centre with its power");
+  EXPECT_NEAR(param(only_light(normalized).params, "intensity"), 2 / (4 * std::numbers::pi * 1.5 * 1.5), 1e-6);
 }
 
-TEST(RisLight, PxrRectLightIsALambertianSpotlightWithTheRectsPower) {
+TEST(RisLight, PxrRectAndDiskLightsAreAreaLightsOfTheirRadiance) {
   Built b = world(R"(Scale 2 3 1
 Light "PxrRectLight" "key" "float intensity" [0.5] "float exposure" [-1])");
   const LightDesc& l = only_light(b);
-  EXPECT_EQ(l.shader, "spotlight");
-  EXPECT_NEAR(param(l.params, "intensity"), 0.25 * 6, 1e-6) << "radiance times the 2 x 3 area";
-  EXPECT_NEAR(param(l.params, "coneangle"), std::numbers::pi / 2, 1e-6);
-  EXPECT_EQ(param(l.params, "beamdistribution"), 1.0f) << "cos^1: a Lambertian emitter";
-  EXPECT_EQ(param3(l.params, "to"), (Vec3f{0, 0, -1}));
+  EXPECT_EQ(l.shader, "rectlight");
+  EXPECT_NEAR(param(l.params, "intensity"), 0.25, 1e-6) << "the radiance, whatever the size";
+  EXPECT_TRUE(warnings(b, "Light").empty()) << "not an approximation any more";
+  Built disk = world(R"(Scale 2 2 1
+Light "PxrDiskLight" "fill" "float intensity" [3] "int areaNormalize" [1])");
+  EXPECT_EQ(only_light(disk).shader, "disklight");
+  EXPECT_NEAR(param(only_light(disk).params, "intensity"), 3 / std::numbers::pi, 1e-6) << "over the area pi";
 }
 
 TEST(RisLight, PxrDomeLightIsAnAmbientLightAndItsMapIsDropped) {
