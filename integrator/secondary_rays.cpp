@@ -107,10 +107,12 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
       const LightSampleGrid grid(n);
       const LightSampleRotation rotation(sp.P, light_index);
       const float share = 1.0f / float(grid.count());
+      // Surfaces respond in the hemisphere their faced-forward normal points to; strands all around.
+      const Vec3f around = at.is_curve ? Vec3f{} : lobes.Nf;
       for (int k = 0; k < grid.count(); ++k) {
         float u0, u1;
         grid.point(k, rotation, u0, u1);
-        if (light->sample(sp.P, u0, u1, lc)) add_light(*light, lc, share);
+        if (light->sample(sp.P, around, u0, u1, lc)) add_light(*light, lc, share);
       }
       continue;
     }

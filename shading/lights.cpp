@@ -127,6 +127,12 @@ std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& de
       continue;
     }
     AreaShape shape;
+    if (kind == "domelight") {
+      const int samples = int(p.get_float("nsamples", float(kDefaultAreaLightSamples)));
+      lights.push_back(make_dome_light(c, std::clamp(samples, 1, 4096)));
+      lights.back()->set_casts_shadows(d.casts_shadows);
+      continue;
+    }
     if (area_shape_of(kind, shape)) {
       const int samples = int(p.get_float("nsamples", float(kDefaultAreaLightSamples)));
       lights.push_back(make_area_light(shape, d.shader_to_world, c, std::clamp(samples, 1, 4096)));

@@ -33,6 +33,12 @@ class Light {
   // illuminate() alone.
   virtual int samples() const { return 0; }
   virtual bool sample(const Vec3f&, float, float, LightContribution&) const { return false; }
+  // The same for a point whose response lies in the hemisphere around the unit normal N (a
+  // surface), or anywhere (N zero: a strand): lights that surround the point (the dome) sample
+  // where that response is.
+  virtual bool sample(const Vec3f& P, const Vec3f& /*N*/, float u0, float u1, LightContribution& out) const {
+    return sample(P, u0, u1, out);
+  }
   // Whether occluders between P and the light are looked for (LightDesc::casts_shadows).
   bool casts_shadows() const { return casts_shadows_; }
   void set_casts_shadows(bool on) { casts_shadows_ = on; }

@@ -60,9 +60,8 @@ RisLightMapping map_ris_light(const std::string& name, const ParamList& params, 
     m.shader = "distantlight";
     extra = {triple_param("from", ParamType::Point, {0, 0, 0}), triple_param("to", ParamType::Point, {0, 0, 1})};
   } else if (name == "PxrDomeLight") {
-    m.shader = "ambientlight";
-    m.casts_shadows = false;
-    m.approximation = "an ambient light: no direction, no shadows";
+    // Its radiance from every direction, sampled with shadows; the map is not read (yet).
+    m.shader = "domelight";
   } else {
     // Shapes of radiance L (shading/area_lights.h). With areaNormalize the light's power does
     // not change with its size: the radiance is divided by the area.

@@ -279,16 +279,15 @@ Light "PxrDiskLight" "fill" "float intensity" [3] "int areaNormalize" [1])");
   EXPECT_NEAR(param(only_light(disk).params, "intensity"), 3 / std::numbers::pi, 1e-6) << "over the area pi";
 }
 
-TEST(RisLight, PxrDomeLightIsAnAmbientLightAndItsMapIsDropped) {
+TEST(RisLight, PxrDomeLightIsADomeLightWithShadowsAndItsMapIsDropped) {
   Built b = world(R"(Light "PxrDomeLight" "env" "float exposure" [1] "string lightColorMap" ["sky.tex"])");
   const LightDesc& l = only_light(b);
-  EXPECT_EQ(l.shader, "ambientlight");
+  EXPECT_EQ(l.shader, "domelight");
   EXPECT_EQ(param(l.params, "intensity"), 2.0f);
-  EXPECT_FALSE(l.casts_shadows);
+  EXPECT_TRUE(l.casts_shadows);
   const auto w = warnings(b, "Light");
-  ASSERT_EQ(w.size(), 2u);
-  EXPECT_EQ(w[0].message, "PxrDomeLight is mapped to an ambient light: no direction, no shadows");
-  EXPECT_EQ(w[1].message, "PxrDomeLight is mapped to darc's ambientlight: dropped lightColorMap");
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].message, "PxrDomeLight is mapped to darc's domelight: dropped lightColorMap");
 }
 
 TEST(RisLight, AnUnknownLightWarnsMakesNoLightAndItsHandleStaysValid) {
