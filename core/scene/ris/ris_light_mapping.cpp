@@ -81,6 +81,9 @@ RisLightMapping map_ris_light(const std::string& name, const ParamList& params, 
     if (normalize && area > 0) intensity = float(scale / area);
   }
   m.params.params = {number_param("intensity", intensity), triple_param("lightcolor", ParamType::Color, color)};
+  // RenderMan's per-light sample count; 0 (its default) leaves the count to the renderer.
+  if (const float fixed = r.number("fixedSampleCount", 0); fixed > 0 && m.shader != "distantlight")
+    m.params.params.push_back(number_param("nsamples", fixed));
   m.params.params.insert(m.params.params.end(), extra.begin(), extra.end());
   m.dropped = r.unread();
   return m;

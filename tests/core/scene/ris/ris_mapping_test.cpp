@@ -290,6 +290,14 @@ TEST(RisLight, PxrDomeLightIsADomeLightWithShadowsAndItsMapIsDropped) {
   EXPECT_EQ(w[0].message, "PxrDomeLight is mapped to darc's domelight: dropped lightColorMap");
 }
 
+TEST(RisLight, FixedSampleCountIsTheLightsSampleCountAndZeroLeavesDarcsDefault) {
+  Built b = world(R"(Light "PxrRectLight" "key" "int fixedSampleCount" [64])");
+  EXPECT_EQ(param(only_light(b).params, "nsamples"), 64.0f);
+  EXPECT_TRUE(warnings(b, "Light").empty()) << "read, not dropped";
+  Built automatic = world(R"(Light "PxrDomeLight" "env" "int fixedSampleCount" [0])");
+  EXPECT_EQ(only_light(automatic).params.find("nsamples"), nullptr);
+}
+
 TEST(RisLight, AnUnknownLightWarnsMakesNoLightAndItsHandleStaysValid) {
   Built b = world(R"(Light "PxrMeshLight" "mesh" "float intensity" [3]
 Illuminate "mesh" 0
