@@ -65,7 +65,9 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
   sp.Cs = at.Cs;
   sp.Os = at.Os;
   sp.dPdv = at.dPdv;
+  sp.st = at.st;
   const SurfaceShader& shader = shading.surface(at.material);
+  shader.apply_patterns(sp);
   const SurfaceLobes lobes = shader.lobes(sp);
   const bool pruning = settings.contribution_threshold > 0;
   auto path = [&] { return PathState{depth, pruning ? weight.get() : 1.0f}; };

@@ -4,7 +4,8 @@
 
 namespace darc {
 
-SceneShading::SceneShading(const Scene& scene, Diagnostics& diag) : lights_(make_lights(scene.lights, diag)) {
+SceneShading::SceneShading(const Scene& scene, Diagnostics& diag)
+    : textures_(std::make_unique<Textures>()), lights_(make_lights(scene.lights, diag)) {
   // AreaLightSource lights take their shape from the scene's geometry.
   for (uint32_t i = 0; i < scene.lights.size() && i < lights_.size(); ++i)
     if (scene.lights[i].geometry) lights_[i] = make_geometry_light(scene, i, diag);
@@ -14,7 +15,7 @@ SceneShading::SceneShading(const Scene& scene, Diagnostics& diag) : lights_(make
     if (!m.emissive_area_light.empty())
       surfaces_.push_back(make_area_light_surface(m.area_light_params));
     else
-      surfaces_.push_back(make_surface_shader(m.surface, m.surface_params, m.surface_loc, diag));
+      surfaces_.push_back(make_surface_shader(m.surface, m.surface_params, m.surface_loc, diag, textures_.get()));
     LightList list;
     for (uint32_t i : m.lights)
       if (i < lights_.size()) list.push_back(lights_[i].get());

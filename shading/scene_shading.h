@@ -20,6 +20,8 @@ class SceneShading {
   const LightList& lights(uint32_t material) const { return light_lists_[material]; }
 
  private:
+  // Before the shaders, which refer to it: they are destroyed first.
+  std::unique_ptr<Textures> textures_;
   std::vector<std::unique_ptr<Light>> lights_;
   std::vector<std::unique_ptr<SurfaceShader>> surfaces_;
   std::vector<LightList> light_lists_;

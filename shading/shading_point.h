@@ -1,6 +1,7 @@
 // What a surface shader sees at one hit: the RI shading globals we support.
 #pragma once
 
+#include "core/math/texture_coordinates.h"
 #include "core/math/vec.h"
 
 namespace darc {
@@ -11,7 +12,7 @@ struct ShadingPoint {
   Vec3f I;    // incident direction (unit), from the eye towards P
   Vec3f Cs;   // surface colour
   Vec3f Os;   // surface opacity
-  float s = 0, t = 0;
+  TextureCoordinates st;  // RI s, t and their changes across the footprint
   Vec3f dPdv;  // unit tangent along a curve (RIB v); zero on surfaces
 };
 

@@ -1,5 +1,7 @@
 #include "shading/surface_shader.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -87,6 +89,22 @@ class PlasticSurface : public SurfaceShader {
  protected:
   float ka_, kd_, ks_, roughness_;
   Vec3f specular_color_;
+};
+
+// paintedplastic (RI Spec 3.2 Appendix A): plastic whose colour is Cs times the texture at
+// (s, t), filtered over the point's footprint.
+class PaintedPlasticSurface : public PlasticSurface {
+ public:
+  PaintedPlasticSurface(const ParamList& p, const Textures& textures, int texture)
+      : PlasticSurface(p), textures_(textures), texture_(texture) {}
+  void apply_patterns(ShadingPoint& sp) const override {
+    Vec3f c;
+    if (textures_.lookup(texture_, sp.st, c)) sp.Cs = mul(sp.Cs, c);
+  }
+
+ private:
+  const Textures& textures_;
+  int texture_;
 };
 
 // metal and shinymetal: Cs * (Ka ambient + Ks specular + Kr reflection). RI's metal has no Kr
@@ -313,7 +331,9 @@ float dielectric_fresnel(float cos_i, float eta) {
   return 0.5f * (r_s * r_s + r_p * r_p);
 }
 
-ShadeResult shade_unshadowed(const SurfaceShader& shader, const ShadingPoint& sp, const LightList& lights) {
+ShadeResult shade_unshadowed(const SurfaceShader& shader, const ShadingPoint& at, const LightList& lights) {
+  ShadingPoint sp = at;
+  shader.apply_patterns(sp);
   SurfaceLobes l = shader.lobes(sp);
   Vec3f c = l.emission;
   LightContribution lc;
@@ -328,8 +348,18 @@ ShadeResult shade_unshadowed(const SurfaceShader& shader, const ShadingPoint& sp
 }
 
 std::unique_ptr<SurfaceShader> make_surface_shader(const std::string& name, const ParamList& params,
-                                                   const SourceLoc& loc, Diagnostics& diag) {
+                                                   const SourceLoc& loc, Diagnostics& diag, Textures* textures) {
   if (name == "constant") return std::make_unique<ConstantSurface>();
+  if (name == "paintedplastic" && textures) {
+    // The scene builder has found the file (an absolute path) or warned and left the name empty.
+    if (const std::string file = params.get_string("texturename", ""); !file.empty()) {
+      std::string reason;
+      const int id = textures->open(file, reason);
+      if (id >= 0) return std::make_unique<PaintedPlasticSurface>(params, *textures, id);
+      diag.warning_once("texture-read:" + file, loc, "Surface",
+                        fmt::format("texture \"{}\" cannot be read ({}): paintedplastic shades without it", file, reason));
+    }
+  }
   if (name == "matte") return std::make_unique<MatteSurface>(params);
   if (name == "plastic" || name == "paintedplastic") return std::make_unique<PlasticSurface>(params);
   if (name == "metal") return std::make_unique<MetalSurface>(params, 0.0f);

@@ -10,6 +10,7 @@
 #include "parser/param_list.h"
 #include "shading/lights.h"
 #include "shading/shading_point.h"
+#include "shading/textures.h"
 
 #include <memory>
 #include <string>
@@ -35,6 +36,9 @@ struct SurfaceLobes {
 class SurfaceShader {
  public:
   virtual ~SurfaceShader() = default;
+  // The shader's patterns: what it reads from textures into the point's inputs (paintedplastic
+  // multiplies Cs by its texture). Called once per shaded point, before lobes().
+  virtual void apply_patterns(ShadingPoint&) const {}
   virtual SurfaceLobes lobes(const ShadingPoint& sp) const = 0;
   // The light sent toward the eye for one non-ambient light's contribution `lc` (its Cl already
   // attenuated by the light itself, not yet by occluders), before Oi. `lobes` is lobes(sp).
@@ -55,11 +59,13 @@ ShadeResult shade_unshadowed(const SurfaceShader& shader, const ShadingPoint& sp
 
 // Makes the shader for a RIB Surface call. Unknown names get one warning each and
 // "defaultsurface" (documented in README). Known names: constant, matte, plastic,
-// paintedplastic (= plastic: no textures), metal, shinymetal (Kr traces a reflection ray where
-// RSL reads an environment map), mirror, glass, hair (Kajiya-Kay, PRMan application note 19),
-// defaultsurface.
+// paintedplastic (plastic with Cs times the texture "texturename", read through `textures`;
+// without them, or when the file cannot be read (a warning), plastic), metal, shinymetal (Kr
+// traces a reflection ray where RSL reads an environment map), mirror, glass, hair = kajiyakay
+// (Kajiya-Kay, PRMan application note 19), chianghair, defaultsurface.
 std::unique_ptr<SurfaceShader> make_surface_shader(const std::string& name, const ParamList& params,
-                                                   const SourceLoc& loc, Diagnostics& diag);
+                                                   const SourceLoc& loc, Diagnostics& diag,
+                                                   Textures* textures = nullptr);
 
 // An emissive surface for geometry inside an AreaLightSource block: Ci = intensity * lightcolor.
 std::unique_ptr<SurfaceShader> make_area_light_surface(const ParamList& light_params);

@@ -3,6 +3,7 @@
 #include "core/math/curve_basis.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -21,16 +22,23 @@ T bezier(const T* c, float u) {
 // reflected and refracted footprints would inherit it.
 constexpr float kMaxGrazingStretch = 8.0f;
 
+// The stretch a texture lookup's footprint may have: beyond it the surface is seen within a
+// tenth of a degree of edge-on.
+constexpr float kMaxTextureStretch = 1000.0f;
+
+// RI's default TextureCoordinates: s = u, t = v (the request is not supported: README).
+constexpr std::array<float, 8> kDefaultTextureCoordinates{0, 0, 1, 0, 0, 1, 1, 1};
+
 // The offset of a neighbouring ray's hit on the plane through P with normal n (Igehy's transfer):
 // the neighbour at parameter t is at P + axis, then slides along d onto the plane.
-Vec3f transfer(const Vec3f& axis, const Vec3f& d, const Vec3f& n) {
+Vec3f transfer(const Vec3f& axis, const Vec3f& d, const Vec3f& n, float max_stretch = kMaxGrazingStretch) {
   const float dn = dot(d, n);
   const Vec3f perpendicular = axis - d * (dot(axis, d) / dot(d, d));
   if (std::abs(dn) < 1e-4f * length(d)) return perpendicular;
   // The exact offset is the perpendicular one plus a slide along the ray; the slide is what grows
   // without bound at grazing angles, so it is the part shortened to the stretch limit.
   const Vec3f slide = axis - d * (dot(axis, n) / dn) - perpendicular;
-  const float limit2 = kMaxGrazingStretch * kMaxGrazingStretch * length_squared(perpendicular);
+  const float limit2 = max_stretch * max_stretch * length_squared(perpendicular);
   const float slide2 = length_squared(slide), room2 = limit2 - length_squared(perpendicular);
   if (slide2 > room2 && slide2 > 0) return perpendicular + slide * std::sqrt(std::max(0.0f, room2) / slide2);
   return perpendicular + slide;
@@ -114,6 +122,12 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
       it.dNdx = mul(sign, surfaces.shading_normal(local, it.P + it.dPdx) - ns);
       it.dNdy = mul(sign, surfaces.shading_normal(local, it.P + it.dPdy) - ns);
     }
+    // A texture is filtered over the footprint's true extent on the surface, however long
+    // grazing angles make it (the lookup's anisotropic filter bounds its own cost): the limit
+    // above is for the rays that leave the surface.
+    const Vec3f tx = footprint ? transfer(footprint->axis_x(t), ray.d, plane_normal, kMaxTextureStretch) : Vec3f{};
+    const Vec3f ty = footprint ? transfer(footprint->axis_y(t), ray.d, plane_normal, kMaxTextureStretch) : Vec3f{};
+    it.st = surfaces.texture_coordinates(local, it.P, tx, ty, kDefaultTextureCoordinates);
     return it;
   }
   if (footprint) {

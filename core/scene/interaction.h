@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/math/ray.h"
+#include "core/math/texture_coordinates.h"
 #include "core/footprint/ray_footprint.h"
 #include "core/scene/scene.h"
 
@@ -32,6 +33,9 @@ struct Interaction {
   // All zero when the ray had no footprint.
   Vec3f dPdx, dPdy;
   Vec3f dNdx, dNdy;
+  // Texture coordinates at P and their changes across the footprint (SurfaceSet::
+  // texture_coordinates); zero on curves and points, which have none yet.
+  TextureCoordinates st;
 };
 
 // Where a strand seen through a footprint is shaded across its width: on the band centred on its

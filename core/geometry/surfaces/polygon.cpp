@@ -218,4 +218,51 @@ std::vector<PolygonShape> make_points_polygons(const std::vector<int>& nverts_pe
   return make_points_general_polygons(one_loop_each, nverts_per_face, indices, P_world, error);
 }
 
+bool PolygonShape::fit_st(const std::vector<Vec3f>& corners, const std::vector<float>& s, const std::vector<float>& t) {
+  const size_t n = corners.size();
+  if (n < 3 || s.size() != n || t.size() != n) return false;
+  Vec3d centre{};
+  for (const Vec3f& c : corners) centre += Vec3d(c);
+  centre = centre / double(n);
+  // Two axes of the plane, and each corner's coordinates along them.
+  const Vec3d nrm(normal);
+  const Vec3d e1 = normalize(std::abs(nrm.x) < 0.9 ? cross(nrm, Vec3d{1, 0, 0}) : cross(nrm, Vec3d{0, 1, 0}));
+  const Vec3d e2 = cross(nrm, e1);
+  // Least squares for value = a + b x + c y: the 3x3 normal equations, solved by Cramer's rule.
+  double m[3][3] = {}, rs[3] = {}, rt[3] = {};
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3d w = Vec3d(corners[i]) - centre;
+    const double row[3] = {1, dot(w, e1), dot(w, e2)};
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) m[r][c] += row[r] * row[c];
+      rs[r] += row[r] * s[i];
+      rt[r] += row[r] * t[i];
+    }
+  }
+  auto det3 = [](const double a[3][3]) {
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+  };
+  const double det = det3(m);
+  if (!(std::abs(det) > 1e-12 * m[1][1] * m[2][2]) || !std::isfinite(det)) return false;
+  auto solve = [&](const double rhs[3], double out[3]) {
+    for (int k = 0; k < 3; ++k) {
+      double a[3][3];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) a[r][c] = c == k ? rhs[r] : m[r][c];
+      out[k] = det3(a) / det;
+    }
+  };
+  double cs[3], ct[3];
+  solve(rs, cs);
+  solve(rt, ct);
+  const Vec3d gs = e1 * cs[1] + e2 * cs[2], gt = e1 * ct[1] + e2 * ct[2];
+  s_gradient = Vec3f(gs);
+  t_gradient = Vec3f(gt);
+  s_offset = float(cs[0] - dot(gs, centre));
+  t_offset = float(ct[0] - dot(gt, centre));
+  has_st = true;
+  return true;
+}
+
 }  // namespace darc

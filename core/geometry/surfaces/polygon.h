@@ -44,6 +44,19 @@ struct PolygonShape {
   // coverage works on them, SurfaceSet::convex_outline); empty otherwise.
   std::vector<Vec3f> convex_corners;
 
+  // The texture coordinates the request gave the face's corners (its "st", "s" and "t"), as
+  // the affine map of the plane that fits them best: s(p) = dot(s_gradient, p) + s_offset, the
+  // same for t (exact when the corners' coordinates are affine in their positions, as on a
+  // triangle or a parallelogram; a polygon has no RI parametrization to interpolate otherwise).
+  // Without them, s = t = 0.
+  bool has_st = false;
+  Vec3f s_gradient, t_gradient;
+  float s_offset = 0, t_offset = 0;
+
+  // Sets the map above from the face's corners and their (s, t); false (nothing set) when the
+  // corners span no plane.
+  bool fit_st(const std::vector<Vec3f>& corners, const std::vector<float>& s, const std::vector<float>& t);
+
   // loops_world[0] is the outer boundary, the others are holes (all in world space). Holes
   // with fewer than 3 points are ignored. Returns nullopt for a degenerate polygon: fewer than
   // 3 outer points, (near) zero area, or a non-finite coordinate. Points are assumed coplanar

@@ -252,6 +252,12 @@ bool Quadric::intersect(const Ray& ray, SurfaceHit& hit) const {
   return false;
 }
 
+Vec2f Quadric::parameters_at(const Vec3f& p_world) const {
+  SurfacePoint sp;
+  locate(world_to_object.transform_point(Vec3d(p_world)), false, sp);
+  return {float(sp.u), float(sp.v)};
+}
+
 Vec3f Quadric::normal_at(const Vec3f& p_world) const {
   SurfacePoint sp;
   locate(world_to_object.transform_point(Vec3d(p_world)), false, sp);

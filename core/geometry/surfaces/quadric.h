@@ -87,6 +87,8 @@ struct Quadric {
     Vec3d normal;
   };
   bool locate(const Vec3d& p_object, bool clip, SurfacePoint& out) const;
+  // The surface parameters (as intersect gives them) of the surface point nearest p_world.
+  Vec2f parameters_at(const Vec3f& p_world) const;
 
  private:
   void finish(const Matrix4& object_to_world_in, bool nondegenerate_shape);

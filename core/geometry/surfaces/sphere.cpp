@@ -127,4 +127,15 @@ Vec3f Sphere::normal_at(const Vec3f& p_world) const {
   return Vec3f(flip_normal ? -n : n);
 }
 
+Vec2f Sphere::parameters_at(const Vec3f& p_world) const {
+  const Vec3d p = world_to_object.transform_point(Vec3d(p_world));
+  const double lp = length(p);
+  double theta = std::atan2(p.y, p.x);
+  if (thetamax > 0 && theta < 0) theta += kTwoPi;
+  if (thetamax < 0 && theta > 0) theta -= kTwoPi;
+  const double u = thetamax != 0 ? theta / thetamax : 0;
+  const double v = v_phi_span != 0 && lp > 0 ? (latitude(p.z * radius / lp, radius) - v_phi0) / v_phi_span : 0;
+  return {float(u), float(v)};
+}
+
 }  // namespace darc

@@ -42,6 +42,11 @@ struct Sphere {
   // The unit geometric normal (as intersect's hit.ng) at the sphere point nearest the world
   // point p (p need not lie exactly on the sphere).
   Vec3f normal_at(const Vec3f& p_world) const;
+
+  // The surface parameters (u along theta, v along latitude, as intersect gives them) of the
+  // surface point nearest p_world, not clamped to the sweep (so that their differences across a
+  // footprint are smooth).
+  Vec2f parameters_at(const Vec3f& p_world) const;
 };
 
 }  // namespace darc

@@ -8,6 +8,7 @@
 
 #include "core/footprint/polygon_coverage.h"
 #include "core/math/bbox.h"
+#include "core/math/texture_coordinates.h"
 #include "core/geometry/surfaces/polygon.h"
 #include "core/geometry/surfaces/quadric.h"
 #include "core/math/ray.h"
@@ -93,6 +94,13 @@ struct SurfaceSet {
   uint32_t layer(uint32_t surface) const;
   // The normal shading uses at p: the geometric one, except on triangles with vertex normals.
   Vec3f shading_normal(uint32_t surface, const Vec3f& p) const;
+  // The texture coordinates at p (a point on the surface) and their changes along the
+  // footprint axes dx, dy. Parametric surfaces (spheres, quadrics, and patches and NURBS through
+  // their triangles) map their (u, v) through `uv_to_st` (RI TextureCoordinates: the (s, t) of
+  // the corners (0,0), (1,0), (0,1), (1,1), bilinear between them); polygons give the st of their
+  // corners (PolygonShape::has_st); everything else s = t = 0.
+  TextureCoordinates texture_coordinates(uint32_t surface, const Vec3f& p, const Vec3f& dx, const Vec3f& dy,
+                                         const std::array<float, 8>& uv_to_st) const;
 };
 
 }  // namespace darc

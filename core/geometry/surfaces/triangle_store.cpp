@@ -8,6 +8,8 @@ namespace darc {
 
 namespace {
 
+constexpr uint8_t kHasNormals = 1, kHasParameters = 2;
+
 // Relative outward padding of a triangle's float bounds: the double-precision hit may lie a few
 // float ulps outside the box of its rounded corners.
 constexpr float kBoundsRelativePadding = 4.0f * std::numeric_limits<float>::epsilon();
@@ -42,7 +44,7 @@ size_t TriangleStore::add(const TriangleMeshData& world, std::optional<uint32_t>
     if (!(len > 0) || !std::isfinite(len)) continue;
     corners_.insert(corners_.end(), {base + a, base + b, base + c});
     face_normal_.push_back(Vec3f(normal / len));
-    smooth_.push_back(has_normals ? 1 : 0);
+    smooth_.push_back(uint8_t((has_normals ? kHasNormals : 0) | (has_uv ? kHasParameters : 0)));
     layer_.push_back(layer.value_or(meshes_));
     ++kept;
   }
@@ -94,23 +96,46 @@ bool TriangleStore::intersect(uint32_t triangle, const Ray& ray, SurfaceHit& hit
   return true;
 }
 
-Vec2f TriangleStore::barycentric(uint32_t triangle, const Vec3f& p) const {
+Vec2f TriangleStore::plane_coordinates(uint32_t triangle, const Vec3f& w_from_a, bool clamp) const {
   const uint32_t* c = &corners_[3 * size_t(triangle)];
-  const Vec3d a(P_[c[0]]), e1 = Vec3d(P_[c[1]]) - a, e2 = Vec3d(P_[c[2]]) - a, w = Vec3d(p) - a;
+  const Vec3d a(P_[c[0]]), e1 = Vec3d(P_[c[1]]) - a, e2 = Vec3d(P_[c[2]]) - a, w(w_from_a);
   // Least squares in the plane: [e1 e2] (b1, b2) ~ w.
   const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
   const double r1 = dot(w, e1), r2 = dot(w, e2);
   const double det = d11 * d22 - d12 * d12;
   if (!(det > 0)) return {0, 0};
   double b1 = (d22 * r1 - d12 * r2) / det, b2 = (d11 * r2 - d12 * r1) / det;
-  b1 = std::clamp(b1, 0.0, 1.0);
-  b2 = std::clamp(b2, 0.0, 1.0 - b1);
+  if (clamp) {
+    b1 = std::clamp(b1, 0.0, 1.0);
+    b2 = std::clamp(b2, 0.0, 1.0 - b1);
+  }
   return {float(b1), float(b2)};
+}
+
+Vec2f TriangleStore::barycentric(uint32_t triangle, const Vec3f& p) const {
+  return plane_coordinates(triangle, p - P_[corners_[3 * size_t(triangle)]], true);
+}
+
+bool TriangleStore::parameters(uint32_t triangle, const Vec3f& p, const Vec3f& dx, const Vec3f& dy, Vec2f& uv,
+                               Vec2f& duv_dx, Vec2f& duv_dy) const {
+  if (!(smooth_[triangle] & kHasParameters)) return false;
+  const uint32_t* c = &corners_[3 * size_t(triangle)];
+  const Vec2f a = uv_[c[0]], b = uv_[c[1]], cc = uv_[c[2]];
+  // (u, v) is affine on the plane: its change along a footprint axis is exact, whatever the
+  // axis' length (a footprint larger than the triangle extends the triangle's own gradient).
+  auto along = [&](const Vec2f& w) {
+    return Vec2f{(b.x - a.x) * w.x + (cc.x - a.x) * w.y, (b.y - a.y) * w.x + (cc.y - a.y) * w.y};
+  };
+  const Vec2f at = along(barycentric(triangle, p));
+  uv = {a.x + at.x, a.y + at.y};
+  duv_dx = along(plane_coordinates(triangle, dx, false));
+  duv_dy = along(plane_coordinates(triangle, dy, false));
+  return true;
 }
 
 Vec3f TriangleStore::shading_normal(uint32_t triangle, const Vec3f& p) const {
   const Vec3f ng = face_normal_[triangle];
-  if (!smooth_[triangle]) return ng;
+  if (!(smooth_[triangle] & kHasNormals)) return ng;
   const uint32_t* c = &corners_[3 * size_t(triangle)];
   const Vec2f b = barycentric(triangle, p);
   const Vec3f n = N_[c[0]] * (1.0f - b.x - b.y) + N_[c[1]] * b.x + N_[c[2]] * b.y;

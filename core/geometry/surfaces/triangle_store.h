@@ -47,17 +47,26 @@ class TriangleStore {
   // the face normal when the mesh has no normals.
   Vec3f shading_normal(uint32_t triangle, const Vec3f& p) const;
 
+  // The surface parameters (u, v) the mesh gave its vertices, at the point of the triangle's
+  // plane nearest p (clamped to the triangle), and their changes along the footprint axes dx, dy.
+  // False (nothing set) when the mesh gave none.
+  bool parameters(uint32_t triangle, const Vec3f& p, const Vec3f& dx, const Vec3f& dy, Vec2f& uv, Vec2f& duv_dx,
+                  Vec2f& duv_dy) const;
+
   size_t memory_bytes() const;
 
  private:
   // The barycentrics (of b and c) of the point of the triangle's plane nearest p.
   Vec2f barycentric(uint32_t triangle, const Vec3f& p) const;
+  // The plane coordinates (along b - a, c - a) of the offset w from corner a, clamped to the
+  // triangle or not.
+  Vec2f plane_coordinates(uint32_t triangle, const Vec3f& w_from_a, bool clamp) const;
 
   std::vector<Vec3f> P_, N_;    // vertices of all meshes; N_ parallel to P_ or empty per mesh
   std::vector<Vec2f> uv_;       // parallel to P_
   std::vector<uint32_t> corners_;  // 3 vertex indices per triangle
   std::vector<Vec3f> face_normal_;
-  std::vector<uint8_t> smooth_;  // per triangle: has vertex normals
+  std::vector<uint8_t> smooth_;  // per triangle: kHasNormals | kHasParameters
   std::vector<uint32_t> layer_;  // per triangle
   uint32_t meshes_ = 0;          // add() calls so far
 };

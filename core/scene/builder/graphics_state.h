@@ -31,6 +31,7 @@ struct Options {
   double near_clip = 1e-10, far_clip = 1e38;
   SourceLoc crop_loc;  // of the CropWindow in effect (its error is reported at WorldBegin)
   std::vector<PendingLight> pre_world_lights;
+  std::vector<std::string> texture_search_path;  // absolute folders (texture_paths.h)
 };
 
 struct Attributes {

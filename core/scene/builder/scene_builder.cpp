@@ -1,4 +1,5 @@
 #include "core/scene/builder/scene_builder.h"
+#include "core/scene/builder/texture_paths.h"
 
 #include <fmt/format.h>
 
@@ -365,7 +366,21 @@ void SceneBuilder::opacity(const std::array<float, 3>& rgb, const SourceLoc& loc
 
 void SceneBuilder::surface(const std::string& name, const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.surface(name, params, loc); })) return;
-  auto checked = std::make_shared<const ParamList>(checked_shader_parameters("Surface", name, params, diag_, loc));
+  ParamList list = checked_shader_parameters("Surface", name, params, diag_, loc);
+  // Texture files are found now, where the RIB names them, and reported at its position.
+  for (Param& p : list.params) {
+    if (!names_a_texture(name, p) || p.strings.empty() || p.strings[0].empty()) continue;
+    if (const auto found = find_texture(p.strings[0], options_.texture_search_path, loc.file_name())) {
+      p.strings[0] = *found;
+      continue;
+    }
+    diag_.warning_once("texture:" + p.strings[0], loc, "Surface",
+                  fmt::format("texture \"{}\" not found (searched beside the RIB file{}): {} shades without it",
+                              p.strings[0], options_.texture_search_path.empty() ? "" : " and along the texture searchpath",
+                              name));
+    p.strings[0].clear();
+  }
+  auto checked = std::make_shared<const ParamList>(std::move(list));
   attributes_.surface = name;
   attributes_.surface_params = std::move(checked);
   attributes_.surface_loc = loc;

@@ -3,6 +3,7 @@
 #include "core/geometry/curves/curve_builder.h"
 #include "core/geometry/curves/curve_set.h"
 #include "core/scene/frame_memory.h"
+#include "core/scene/builder/polygon_st.h"
 #include "core/scene/builder/scene_builder.h"
 
 #include <fmt/format.h>
@@ -351,6 +352,9 @@ void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const s
                               beyond_float_range == 1 ? std::string("1 point lies")
                                                       : fmt::format("{} points lie", beyond_float_range),
                               beyond_float_range == 1 ? "it" : "them"));
+  if (const std::string warning = fit_polygon_st(params, nloops_per_face, nverts_per_loop, indices, world, shapes);
+      !warning.empty())
+    diag_.warning(loc, request, warning);
   uint32_t material = make_material(loc);
   // The faces of a mesh (or a non-planar face's fan) meet edge to edge and may each be smaller
   // than a footprint: pieces of one surface (SurfaceSet::is_piece).

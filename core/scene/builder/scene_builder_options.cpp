@@ -2,6 +2,7 @@
 // Hider and the requests without effect on darc's images): they set the options a frame starts
 // from (the graphics state and the frame's blocks live in scene_builder.cpp).
 #include "core/scene/builder/scene_builder.h"
+#include "core/scene/builder/texture_paths.h"
 
 #include <fmt/format.h>
 
@@ -36,10 +37,15 @@ bool SceneBuilder::option_allowed(const char* request, const SourceLoc& loc) {
 
 void SceneBuilder::option(const std::string& category, const ParamList& params, const SourceLoc& loc) {
   if (category == "searchpath") {
-    for (const Param& p : params.params)
-      if (p.name != "archive" && p.name != "procedural")  // the parser uses both
+    for (const Param& p : params.params) {
+      if (p.name == "texture" && p.decl.is_string()) {
+        options_.texture_search_path = texture_search_path(p.strings, options_.texture_search_path, loc.file_name());
+      } else if (p.name != "archive" && p.name != "procedural") {  // the parser uses both
         diag_.warning_once("searchpath:" + p.name, loc, "Option",
-                           "searchpath \"" + p.name + "\" ignored (only \"archive\" and \"procedural\" are used)");
+                           "searchpath \"" + p.name +
+                               "\" ignored (only \"archive\", \"procedural\" and \"texture\" are used)");
+      }
+    }
     return;
   }
   if (category == "trace") return trace_option(params, loc);

@@ -1,0 +1,171 @@
+// Textures rendered end to end: paintedplastic reads its "texturename" through OpenImageIO at
+// the (s, t) a surface gives (a polygon's "st", a patch's or a quadric's parameters), filtered
+// by the hit's footprint, so that the distance hider's one ray per pixel reads a receding
+// checkerboard as 16x16 point samples do (lookdev.md §4); a missing file is a warning and the
+// shader's documented fallback.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "support/darc_command.h"
+#include "support/render.h"
+#include "support/scenes_from_rib.h"
+
+namespace darc {
+namespace {
+
+using test::render_image;
+using test::ScratchDir;
+
+// A 256x256 texture of 16x16 checks of 0.1 and 0.9, MIP-mapped by OIIO's maketx.
+std::string make_checker(const ScratchDir& dir) {
+  OIIO::ImageBuf flat(OIIO::ImageSpec(256, 256, 3, OIIO::TypeDesc::FLOAT));
+  const float dark[3] = {0.1f, 0.1f, 0.1f}, light[3] = {0.9f, 0.9f, 0.9f};
+  OIIO::ImageBufAlgo::checker(flat, 16, 16, 1, dark, light);
+  const std::string path = (dir / "checker.tx").string();
+  OIIO::ImageSpec config;
+  config.attribute("wrapmodes", "periodic,periodic");
+  EXPECT_TRUE(OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, flat, path, config));
+  return path;
+}
+
+// A texture whose left half is red and right half blue, and whose top half (t < 0.5) is brighter.
+std::string make_quadrants(const ScratchDir& dir) {
+  OIIO::ImageBuf image(OIIO::ImageSpec(64, 64, 3, OIIO::TypeDesc::FLOAT));
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const float v = y < 32 ? 1.0f : 0.5f;
+      const float rgb[3] = {x < 32 ? v : 0.0f, 0.0f, x < 32 ? 0.0f : v};
+      image.setpixel(x, y, rgb);
+    }
+  const std::string path = (dir / "quadrants.exr").string();
+  EXPECT_TRUE(image.write(path));
+  return path;
+}
+
+// A plane y = 0 seen from just above, receding to the horizon, its st repeating the checker
+// 10 times across and 15 times in depth; ambient light only, so the image is the texture.
+std::string receding_plane(const std::string& texture, int samples) {
+  std::ostringstream s;
+  s << "Format 160 120 1\nPixelSamples " << samples << " " << samples << "\nPixelFilter \"box\" 1 1\n"
+    << "Projection \"perspective\" \"fov\" [50]\nRotate -15 1 0 0\nTranslate 0 -1 1\nWorldBegin\n"
+    << "LightSource \"ambientlight\" 1 \"intensity\" [1]\n"
+    << "Surface \"paintedplastic\" \"texturename\" [\"" << texture << "\"] \"Kd\" [0] \"Ks\" [0]\n"
+    << "Polygon \"P\" [-20 0 0  20 0 0  20 0 60  -20 0 60] \"st\" [0 0  10 0  10 15  0 15]\nWorldEnd\n";
+  return s.str();
+}
+
+double rmse(const Image& a, const Image& b) {
+  double sum = 0;
+  int n = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x)
+      for (int c = 0; c < 3; ++c, ++n) sum += std::pow(double(a.at(x, y, c)) - b.at(x, y, c), 2);
+  return std::sqrt(sum / n);
+}
+
+TEST(TextureRender, ARecedingCheckerboardAtOneRayPerPixelMatchesSixteenBySixteenPointSamples) {
+  ScratchDir dir("receding_checkerboard");
+  const std::string texture = make_checker(dir);
+  const Image reference = render_image(receding_plane(texture, 16), HiderKind::Stochastic);
+  const Image filtered = render_image(receding_plane(texture, 1), HiderKind::Distance);
+  const Image point = render_image(receding_plane(texture, 1), HiderKind::Stochastic);
+  const double filtered_error = rmse(filtered, reference), point_error = rmse(point, reference);
+  EXPECT_LE(filtered_error, 0.02);
+  // The same one ray per pixel point-sampled aliases: the footprint is what filters.
+  EXPECT_GT(point_error, 4 * filtered_error);
+  // Rows near the horizon (the plane ends at row 29), where a pixel holds many checks: grey, not
+  // the checks' moire (point samples there are 0.1 or 0.9).
+  double far_spread = 0, point_spread = 0;
+  for (int y = 31; y <= 35; ++y)
+    for (int x = 0; x < 160; ++x) {
+      far_spread = std::max(far_spread, std::abs(double(filtered.at(x, y, 0)) - 0.5));
+      point_spread = std::max(point_spread, std::abs(double(point.at(x, y, 0)) - 0.5));
+    }
+  EXPECT_LT(far_spread, 0.1);
+  EXPECT_GT(point_spread, 0.3);
+}
+
+// The texture's orientation: s runs left to right across the image and t down it (RI's and
+// OIIO's convention); on a bilinear patch s = u and t = v; on a polygon its "st".
+TEST(TextureRender, SRunsAcrossTheImageAndTDownItOnPatchesAndPolygons) {
+  ScratchDir dir("texture_orientation");
+  const std::string texture = make_quadrants(dir);
+  // Seen from +z looking down -z: x to the right, y up. The patch's u runs along +x, v along -y,
+  // so its top left is (s, t) = (0, 0): bright red.
+  const std::string head = "Format 8 8 1\nPixelSamples 1 1\nProjection \"orthographic\"\nTranslate 0 0 5\nWorldBegin\n"
+                           "LightSource \"ambientlight\" 1 \"intensity\" [1]\nSurface \"paintedplastic\" \"texturename\" [\"" +
+                           texture + "\"] \"Kd\" [0] \"Ks\" [0]\n";
+  const std::string patch = head + "Patch \"bilinear\" \"P\" [-1 1 0  1 1 0  -1 -1 0  1 -1 0]\nWorldEnd\n";
+  const std::string polygon =
+      head + "Polygon \"P\" [-1 1 0  1 1 0  1 -1 0  -1 -1 0] \"st\" [0 0  1 0  1 1  0 1]\nWorldEnd\n";
+  for (const std::string& rib : {patch, polygon})
+    for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
+      const Image image = render_image(rib, hider);
+      EXPECT_NEAR(image.at(1, 1, 0), 1.0f, 0.02f) << to_string(hider);   // top left: bright red
+      EXPECT_NEAR(image.at(6, 1, 2), 1.0f, 0.02f) << to_string(hider);   // top right: bright blue
+      EXPECT_NEAR(image.at(1, 6, 0), 0.5f, 0.02f) << to_string(hider);   // bottom left: dim red
+      EXPECT_NEAR(image.at(6, 6, 2), 0.5f, 0.02f) << to_string(hider);   // bottom right: dim blue
+      EXPECT_NEAR(image.at(1, 1, 2), 0.0f, 0.02f) << to_string(hider);
+    }
+}
+
+// A sphere's s follows its longitude: the texture's left half is on one side of it.
+TEST(TextureRender, ASphereIsTexturedByItsParameters) {
+  ScratchDir dir("texture_sphere");
+  const std::string texture = make_quadrants(dir);
+  // Looking down the sphere's -z axis from +z: longitudes 0-180 degrees (u < 0.5, red) are at y > 0.
+  const std::string rib = "Format 16 16 1\nPixelSamples 1 1\nProjection \"orthographic\"\nScreenWindow -1.2 1.2 -1.2 1.2\n"
+                          "Translate 0 0 5\nWorldBegin\nLightSource \"ambientlight\" 1 \"intensity\" [1]\n"
+                          "Surface \"paintedplastic\" \"texturename\" [\"" +
+                          texture + "\"] \"Kd\" [0] \"Ks\" [0]\nSphere 1 -1 1 360\nWorldEnd\n";
+  const Image image = render_image(rib, HiderKind::Distance);
+  EXPECT_GT(image.at(8, 3, 0), 0.4f);   // above the centre (y > 0): red
+  EXPECT_LT(image.at(8, 3, 2), 0.05f);
+  EXPECT_GT(image.at(8, 12, 2), 0.4f);  // below: blue
+  EXPECT_LT(image.at(8, 12, 0), 0.05f);
+}
+
+TEST(TextureRender, AMissingTextureWarnsWhereTheRibNamesItAndShadesWithCs) {
+  const std::string rib =
+      "Format 4 4 1\nPixelSamples 1 1\nProjection \"orthographic\"\nTranslate 0 0 5\nWorldBegin\n"
+      "LightSource \"ambientlight\" 1 \"intensity\" [1]\nColor 0.3 0.6 0.9\n"
+      "Surface \"paintedplastic\" \"texturename\" [\"no-such-texture.tx\"] \"Kd\" [0] \"Ks\" [0]\n"
+      "Polygon \"P\" [-1 1 0  1 1 0  1 -1 0  -1 -1 0]\nWorldEnd\n";
+  const test::Built built = test::build(rib);
+  ASSERT_EQ(built.scenes.size(), 1u);
+  int warnings = 0;
+  for (const Diagnostic& d : built.diagnostics)
+    if (d.severity == Severity::Warning && d.message.find("no-such-texture.tx") != std::string::npos) {
+      ++warnings;
+      EXPECT_EQ(d.loc.line, 8) << d.str();
+      EXPECT_NE(d.message.find("not found"), std::string::npos) << d.str();
+    }
+  EXPECT_EQ(warnings, 1);
+  const Image image = render_image(rib, HiderKind::Distance);
+  EXPECT_NEAR(image.at(2, 2, 0), 0.3f, 1e-4f);
+  EXPECT_NEAR(image.at(2, 2, 2), 0.9f, 1e-4f);
+}
+
+TEST(TextureRender, ATextureIsFoundAlongTheTextureSearchPath) {
+  ScratchDir dir("texture_searchpath");
+  make_quadrants(dir);
+  const std::string rib = "Option \"searchpath\" \"texture\" [\"/nonexistent:" + dir.path().string() +
+                          "\"]\nFormat 8 8 1\nPixelSamples 1 1\nProjection \"orthographic\"\nTranslate 0 0 5\nWorldBegin\n"
+                          "LightSource \"ambientlight\" 1 \"intensity\" [1]\n"
+                          "Surface \"paintedplastic\" \"texturename\" [\"quadrants.exr\"] \"Kd\" [0] \"Ks\" [0]\n"
+                          "Patch \"bilinear\" \"P\" [-1 1 0  1 1 0  -1 -1 0  1 -1 0]\nWorldEnd\n";
+  const test::Built built = test::build(rib);
+  for (const Diagnostic& d : built.diagnostics) ADD_FAILURE() << "unexpected: " << d.str();
+  const Image image = render_image(rib, HiderKind::Distance);
+  EXPECT_NEAR(image.at(1, 1, 0), 1.0f, 0.02f);
+  EXPECT_NEAR(image.at(6, 6, 2), 0.5f, 0.02f);
+}
+
+}  // namespace
+}  // namespace darc
