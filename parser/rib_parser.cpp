@@ -14,6 +14,7 @@
 #include "parser/known_requests.h"
 #include "parser/lexer.h"
 #include "parser/request_table.h"
+#include "parser/search_path.h"
 
 namespace darc {
 
@@ -48,28 +49,6 @@ std::string canonical_name(const std::string& path) {
 bool is_readable_file(const fs::path& p) {
   std::error_code ec;
   return fs::is_regular_file(p, ec);
-}
-
-// Splits a search path "a:b:&:@" replacing "&" by the previous path's directories and "@" by
-// the default ones.
-std::vector<std::string> expand_search_path(const std::string& spec, const std::vector<std::string>& previous,
-                                            const std::vector<std::string>& defaults) {
-  std::vector<std::string> dirs;
-  size_t begin = 0;
-  while (begin <= spec.size()) {
-    size_t end = spec.find(':', begin);
-    if (end == std::string::npos) end = spec.size();
-    const std::string dir = spec.substr(begin, end - begin);
-    if (dir == "&") {
-      dirs.insert(dirs.end(), previous.begin(), previous.end());
-    } else if (dir == "@") {
-      dirs.insert(dirs.end(), defaults.begin(), defaults.end());
-    } else if (!dir.empty()) {
-      dirs.push_back(dir);
-    }
-    begin = end + 1;
-  }
-  return dirs;
 }
 
 // The search path given by every string of `param`.

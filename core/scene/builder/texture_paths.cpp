@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include "parser/search_path.h"
+
 namespace darc {
 
 namespace fs = std::filesystem;
@@ -25,21 +27,12 @@ bool is_file(const fs::path& p) {
 std::vector<std::string> texture_search_path(const std::vector<std::string>& specs,
                                              const std::vector<std::string>& previous, const std::string& rib_file) {
   std::vector<std::string> dirs;
-  for (const std::string& spec : specs) {
-    size_t begin = 0;
-    while (begin <= spec.size()) {
-      size_t end = spec.find(':', begin);
-      if (end == std::string::npos) end = spec.size();
-      const std::string dir = spec.substr(begin, end - begin);
-      if (dir == "&") {
-        dirs.insert(dirs.end(), previous.begin(), previous.end());
-      } else if (!dir.empty()) {
-        const fs::path p(dir);
-        dirs.push_back(p.is_absolute() ? p.string() : (folder_of(rib_file) / p).lexically_normal().string());
-      }
-      begin = end + 1;
+  for (const std::string& spec : specs)
+    for (const std::string& dir : expand_search_path(spec, previous, {})) {
+      const fs::path p(dir);
+      // Folders from '&' are absolute already.
+      dirs.push_back(p.is_absolute() ? p.string() : (folder_of(rib_file) / p).lexically_normal().string());
     }
-  }
   return dirs;
 }
 
