@@ -31,6 +31,23 @@ OIIO::TextureOpt base_options() {
   return opt;
 }
 
+// One TextureSystem for the process, made on first use and never destroyed: OpenImageIO 2.4's
+// TextureSystem::destroy frees the object with the wrong type (AddressSanitizer reports a
+// new-delete-type-mismatch inside libOpenImageIO), so a private system per render cannot be given
+// back. It is still private (never OIIO's shared cache, which ImageBuf reads go through), holds
+// only what textures read, and a file changed on disk is read again (Textures::open asks it to
+// drop a file whose modification time moved), so frames of a sequence see their own textures.
+// Lookups are thread safe and do not depend on what the cache holds, so images do not either.
+OIIO::TextureSystem& process_texture_system() {
+  static OIIO::TextureSystem* const ts = [] {
+    OIIO::TextureSystem* made = OIIO::TextureSystem::create(/*shared=*/false);
+    // Unmipped images are MIP-mapped in memory, so a plain image is filtered as its .tx is.
+    made->attribute("automip", 1);
+    return made;
+  }();
+  return *ts;
+}
+
 }  // namespace
 
 struct Textures::System {
@@ -40,15 +57,8 @@ struct Textures::System {
     int channels;
     OIIO::TextureOpt::Wrap swrap, twrap;
   };
-  OIIO::TextureSystem* ts = nullptr;
+  OIIO::TextureSystem* ts = &process_texture_system();
   std::vector<Entry> entries;
-
-  System() {
-    ts = OIIO::TextureSystem::create(/*shared=*/false);
-    // Unmipped images are MIP-mapped in memory, so a plain image is filtered as its .tx is.
-    ts->attribute("automip", 1);
-  }
-  ~System() { OIIO::TextureSystem::destroy(ts, /*teardown_imagecache=*/true); }
 };
 
 Textures::Textures() = default;
@@ -60,6 +70,7 @@ int Textures::open(const std::string& path, std::string& reason) {
   for (size_t i = 0; i < sys.entries.size(); ++i)
     if (sys.entries[i].path == path) return int(i);
   const OIIO::ustring name(path);
+  sys.ts->invalidate(name, /*force=*/false);  // only when the file changed since it was read
   const OIIO::ImageSpec* spec = sys.ts->imagespec(name);
   if (!spec) {
     reason = sys.ts->geterror();

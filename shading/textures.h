@@ -1,8 +1,8 @@
 // Image textures read through OpenImageIO's TextureSystem: MIP-mapped .tx files from maketx and
 // plain images, filtered over the footprint a lookup is given (its s, t derivatives along two
 // directions of the hit's footprint: lookdev.md §4.2), so that the distance hider's one ray per
-// pixel reads a texture antialiased. One private cache per instance (never OIIO's shared one):
-// renders and tests stay independent, and no global state is touched.
+// pixel reads a texture antialiased. The cache behind it is one private TextureSystem for the
+// process (textures.cpp says why it is never destroyed); ids and handles belong to the instance.
 #pragma once
 
 #include <memory>
