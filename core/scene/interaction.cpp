@@ -122,12 +122,14 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
       it.dNdx = mul(sign, surfaces.shading_normal(local, it.P + it.dPdx) - ns);
       it.dNdy = mul(sign, surfaces.shading_normal(local, it.P + it.dPdy) - ns);
     }
-    // A texture is filtered over the footprint's true extent on the surface, however long
-    // grazing angles make it (the lookup's anisotropic filter bounds its own cost): the limit
-    // above is for the rays that leave the surface.
-    const Vec3f tx = footprint ? transfer(footprint->axis_x(t), ray.d, plane_normal, kMaxTextureStretch) : Vec3f{};
-    const Vec3f ty = footprint ? transfer(footprint->axis_y(t), ray.d, plane_normal, kMaxTextureStretch) : Vec3f{};
-    it.st = surfaces.texture_coordinates(local, it.P, tx, ty, kDefaultTextureCoordinates);
+    if (m.reads_textures) {
+      // A texture is filtered over the footprint's true extent on the surface, however long
+      // grazing angles make it (the lookup's anisotropic filter bounds its own cost): the limit
+      // above is for the rays that leave the surface.
+      const Vec3f tx = footprint ? transfer(footprint->axis_x(t), ray.d, plane_normal, kMaxTextureStretch) : Vec3f{};
+      const Vec3f ty = footprint ? transfer(footprint->axis_y(t), ray.d, plane_normal, kMaxTextureStretch) : Vec3f{};
+      it.st = surfaces.texture_coordinates(local, it.P, tx, ty, kDefaultTextureCoordinates);
+    }
     return it;
   }
   if (footprint) {

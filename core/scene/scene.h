@@ -45,6 +45,9 @@ struct Material {
   // The Scene::lights index of that area light: the geometry is its shape (-1: none).
   int area_light = -1;
   Transmission transmission = Transmission::Os;
+  // True when the surface shader reads a texture: only then does a hit compute its (s, t) and
+  // their derivatives (Interaction::st), which every other hit would pay for nothing.
+  bool reads_textures = false;
 
   // Sides 1: true when a surface whose own normal (orientation not applied) is `n` is seen
   // from behind along direction d, and so is not drawn. The one place the rule is written.

@@ -5,6 +5,7 @@
 #include "core/scene/frame_memory.h"
 #include "core/scene/builder/polygon_st.h"
 #include "core/scene/builder/scene_builder.h"
+#include "core/scene/builder/texture_paths.h"
 
 #include <fmt/format.h>
 
@@ -87,6 +88,10 @@ uint32_t SceneBuilder::make_material(const SourceLoc&) {
   m.surface = attributes_.surface;
   m.surface_params = *attributes_.surface_params;
   m.surface_loc = attributes_.surface_loc;
+  // A texture the builder could not find was cleared (SceneBuilder::surface): it reads nothing.
+  m.reads_textures = std::ranges::any_of(m.surface_params.params, [&](const Param& p) {
+    return names_a_texture(m.surface, p) && !p.strings.empty() && !p.strings[0].empty();
+  });
   m.color = attributes_.color;
   m.opacity = attributes_.opacity;
   m.sides = attributes_.sides;
