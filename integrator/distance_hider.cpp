@@ -399,11 +399,14 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
                                          stopping_transmittance(s, path.weight, kDistanceMinTransmittance));
   }
 
-  Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint* footprint, const PathState& next) override {
+  Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint* footprint, const PathState& next,
+                 const Vec3f& beyond) override {
     RayFootprint fp = footprint ? *footprint : RayFootprint{};
     fp.min_radius = ctx_.min_radius;
     const float self = std::max(ctx_.base.secondary.self_offset, 4 * fp.reach(0));
-    return trace_distance_ray(ctx_, ray, fp, counters_, scratch_, next, leaving_filter(at, ctx_.base.scene, self)).color;
+    const SampleValue v =
+        trace_distance_ray(ctx_, ray, fp, counters_, scratch_, next, leaving_filter(at, ctx_.base.scene, self));
+    return v.color + beyond * (1 - v.alpha);
   }
 
  private:

@@ -136,7 +136,10 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
     }
     counters.count_traced(kind);
     Ray r{at.P, dir, settings.ray_offset};
-    c += mul(factor, tracer.radiance(at, r, fp, PathState{depth + 1, ray_weight}));
+    // What the ray sees if it leaves the scene: the domes that light this point, along it.
+    Vec3f beyond{};
+    for (const Light* light : shading.lights(at.material)) beyond += light->environment(dir);
+    c += mul(factor, tracer.radiance(at, r, fp, PathState{depth + 1, ray_weight}, beyond));
   };
   if (may_bounce && max_component(lobes.reflection) > 0) {
     const Vec3f r = reflect(incoming, lobes.Nf);

@@ -53,9 +53,10 @@ class SecondaryRayTracer {
   virtual Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance,
                                      const RayFootprint* footprint, const PathState& path) = 0;
   // The colour seen along a reflected or refracted ray from `at` (with its footprint, or null for
-  // exact rays); `next` is that ray's path state.
+  // exact rays); `next` is that ray's path state. `beyond`: the radiance the ray receives if it
+  // leaves the scene (a dome's), seen through what the ray's coverage leaves uncovered.
   virtual Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint* footprint,
-                         const PathState& next) = 0;
+                         const PathState& next, const Vec3f& beyond) = 0;
 };
 
 struct SecondaryRaySettings {

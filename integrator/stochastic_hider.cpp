@@ -45,8 +45,11 @@ class ExactSecondaryRays : public SecondaryRayTracer {
     return tr;
   }
 
-  Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint*, const PathState& next) override {
-    return trace_camera_ray(ctx_, ray, counters_, scratch_, next, leaving_filter(at, ctx_.scene, ctx_.secondary.self_offset)).color;
+  Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint*, const PathState& next,
+                 const Vec3f& beyond) override {
+    const SampleValue v =
+        trace_camera_ray(ctx_, ray, counters_, scratch_, next, leaving_filter(at, ctx_.scene, ctx_.secondary.self_offset));
+    return v.color + beyond * (1 - v.alpha);
   }
 
  private:

@@ -124,45 +124,9 @@ class SphereLight : public Light {
   float radius_;
 };
 
-class DomeLight : public Light {
- public:
-  DomeLight(const Vec3f& radiance, int samples) : radiance_(radiance), samples_(samples) {}
-  bool illuminate(const Vec3f&, LightContribution&, float) const override { return false; }
-  int samples() const override { return samples_; }
-  bool sample(const Vec3f& P, float u0, float u1, LightContribution& out) const override {
-    return sample(P, Vec3f{}, u0, u1, out);
-  }
-  bool sample(const Vec3f&, const Vec3f& N, float u0, float u1, LightContribution& out) const override {
-    const float inf = std::numeric_limits<float>::infinity();
-    const float phi = 2 * kPi * u1;
-    if (length_squared(N) == 0.0f) {
-      // Uniform over the sphere: pdf 1 / (4 pi), so the sample stands for 4 pi steradians.
-      const float z = 1 - 2 * u0, r = std::sqrt(std::max(0.0f, 1 - z * z));
-      out = {radiance_ * 4.0f, Vec3f{r * std::cos(phi), r * std::sin(phi), z}, false, inf};
-      return true;
-    }
-    // By the cosine about N (Malley): pdf cos / pi, so the sample stands for pi / cos.
-    const float cos_t = std::sqrt(std::max(0.0f, 1 - u0)), sin_t = std::sqrt(std::max(0.0f, u0));
-    if (!(cos_t > 1e-6f)) return false;
-    const Vec3f a = normalize(std::abs(N.x) < 0.9f ? cross(N, Vec3f{1, 0, 0}) : cross(N, Vec3f{0, 1, 0}));
-    const Vec3f b = cross(N, a);
-    const Vec3f L = normalize(N * cos_t + a * (sin_t * std::cos(phi)) + b * (sin_t * std::sin(phi)));
-    out = {radiance_ * (1 / cos_t), L, false, inf};
-    return true;
-  }
-
- private:
-  Vec3f radiance_;
-  int samples_;
-};
-
 Vec3f to_f(const Vec3d& v) { return Vec3f(v); }
 
 }  // namespace
-
-std::unique_ptr<Light> make_dome_light(const Vec3f& radiance, int samples) {
-  return std::make_unique<DomeLight>(radiance, std::max(samples, 1));
-}
 
 bool area_shape_of(const std::string& shader, AreaShape& shape) {
   if (shader == "rectlight") shape = AreaShape::Rect;

@@ -9,8 +9,8 @@
 // - "rectlight" (PxrRectLight): the unit square of the xy plane, centred, emitting toward +z;
 // - "disklight" (PxrDiskLight): the disc of diameter 1 in the xy plane, emitting toward +z;
 // - "spherelight" (PxrSphereLight): the sphere of diameter 1 (its radius is that of the sphere
-//   of the same volume under a non-uniform scale), emitting everywhere;
-// - "domelight" (PxrDomeLight): a constant radiance from every direction.
+//   of the same volume under a non-uniform scale), emitting everywhere.
+// The dome, which has no shape, is shading/dome_light.h.
 // Sampling: the rectangle and the disc by area (the disc through the concentric map, so that
 // strata stay compact), the sphere by the cone it subtends (uniform in solid angle).
 #pragma once
@@ -27,11 +27,6 @@ namespace darc {
 inline constexpr int kDefaultAreaLightSamples = 16;
 
 enum class AreaShape { Rect, Disk, Sphere };
-
-// "domelight" (PxrDomeLight without its map): radiance L from every direction, at infinity.
-// Sampled by the cosine around a surface's normal (each sample's Cl is then L / cos: a matte of
-// Kd 1 returns L, the furnace), uniformly over the sphere for a strand.
-std::unique_ptr<Light> make_dome_light(const Vec3f& radiance, int samples);
 
 // `radiance`: intensity * lightcolor (already divided by the area with areaNormalize).
 std::unique_ptr<Light> make_area_light(AreaShape shape, const Matrix4& light_to_world, const Vec3f& radiance,

@@ -6,6 +6,7 @@
 
 #include "core/scene/builder/shader_parameter_checks.h"
 #include "shading/area_lights.h"
+#include "shading/dome_light.h"
 
 namespace darc {
 
@@ -21,6 +22,16 @@ Vec3d param_point(const ParamList& p, const char* name, Vec3d fallback) {
   const Param* x = p.find(name);
   if (!x || x->floats.size() < 3) return fallback;
   return {x->floats[0], x->floats[1], x->floats[2]};
+}
+
+// The dome's lat-long map: "mapname" (what PxrDomeLight's lightColorMap becomes), or "envname"
+// as some environment light shaders call it; the scene builder made it a full path, or cleared it
+// when the file was not found.
+std::string dome_map_name(const ParamList& p) {
+  for (const char* name : {"mapname", "envname"})
+    if (const Param* x = p.find(name); x && x->decl.is_string() && !x->strings.empty() && !x->strings[0].empty())
+      return x->strings[0];
+  return {};
 }
 
 class NoLight : public Light {
@@ -127,9 +138,19 @@ std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& de
       continue;
     }
     AreaShape shape;
-    if (kind == "domelight") {
+    if (kind == "domelight" || kind == "envlight") {
       const int samples = int(p.get_float("nsamples", float(kDefaultAreaLightSamples)));
-      lights.push_back(make_dome_light(c, std::clamp(samples, 1, 4096)));
+      std::shared_ptr<const LatLongMap> map;
+      if (const std::string name = dome_map_name(p); !name.empty()) {
+        std::string reason;
+        if (auto loaded = LatLongMap::load(name, reason))
+          map = std::make_shared<const LatLongMap>(std::move(*loaded));
+        else
+          diag.warning_once("dome-map:" + name, d.loc, "LightSource",
+                            "environment map \"" + name + "\" cannot be read (" + reason +
+                                "): the dome lights with its colour alone");
+      }
+      lights.push_back(make_dome_light(c, std::clamp(samples, 1, 4096), d.shader_to_world, std::move(map)));
       lights.back()->set_casts_shadows(d.casts_shadows);
       continue;
     }

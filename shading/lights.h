@@ -39,6 +39,9 @@ class Light {
   virtual bool sample(const Vec3f& P, const Vec3f& /*N*/, float u0, float u1, LightContribution& out) const {
     return sample(P, u0, u1, out);
   }
+  // The radiance a ray leaving the scene along unit direction d receives from this light (a
+  // dome's, at infinity); black for lights that are not at infinity all around.
+  virtual Vec3f environment(const Vec3f& /*d*/) const { return {}; }
   // Whether occluders between P and the light are looked for (LightDesc::casts_shadows).
   bool casts_shadows() const { return casts_shadows_; }
   void set_casts_shadows(bool on) { casts_shadows_ = on; }
@@ -53,7 +56,9 @@ class Light {
 // warning each and fall back: to a spotlight when they have "to" and "coneangle", to a point
 // light when they have "from", else to a distant light along +z (documented in README).
 // "rectlight", "disklight" and "spherelight" are darc's area lights (shading/area_lights.h), with
-// "intensity", "lightcolor" and "nsamples".
+// "intensity", "lightcolor" and "nsamples"; "domelight" and "envlight" the dome
+// (shading/dome_light.h), with those and "string mapname" (or "envname"), a lat-long image: one
+// that cannot be read is a warning, and the dome keeps its colour alone.
 std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& descs, Diagnostics& diag);
 
 }  // namespace darc

@@ -367,23 +367,28 @@ void SceneBuilder::opacity(const std::array<float, 3>& rgb, const SourceLoc& loc
 void SceneBuilder::surface(const std::string& name, const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.surface(name, params, loc); })) return;
   ParamList list = checked_shader_parameters("Surface", name, params, diag_, loc);
-  // Texture files are found now, where the RIB names them, and reported at its position.
-  for (Param& p : list.params) {
-    if (!names_a_texture(name, p) || p.strings.empty() || p.strings[0].empty()) continue;
-    if (const auto found = find_texture(p.strings[0], options_.texture_search_path, loc.file_name())) {
-      p.strings[0] = *found;
-      continue;
-    }
-    diag_.warning_once("texture:" + p.strings[0], loc, "Surface",
-                  fmt::format("texture \"{}\" not found (searched beside the RIB file{}): {} shades without it",
-                              p.strings[0], options_.texture_search_path.empty() ? "" : " and along the texture searchpath",
-                              name));
-    p.strings[0].clear();
-  }
+  resolve_texture_names("Surface", name, list, "shades without it", loc);
   auto checked = std::make_shared<const ParamList>(std::move(list));
   attributes_.surface = name;
   attributes_.surface_params = std::move(checked);
   attributes_.surface_loc = loc;
+}
+
+void SceneBuilder::resolve_texture_names(const char* request, const std::string& shader, ParamList& params,
+                                         const char* fallback, const SourceLoc& loc) {
+  // Texture files are found now, where the RIB names them, and reported at its position.
+  for (Param& p : params.params) {
+    if (!names_a_texture(shader, p) || p.strings.empty() || p.strings[0].empty()) continue;
+    if (const auto found = find_texture(p.strings[0], options_.texture_search_path, loc.file_name())) {
+      p.strings[0] = *found;
+      continue;
+    }
+    diag_.warning_once("texture:" + p.strings[0], loc, request,
+                       fmt::format("texture \"{}\" not found (searched beside the RIB file{}): {} {}", p.strings[0],
+                                   options_.texture_search_path.empty() ? "" : " and along the texture searchpath",
+                                   shader, fallback));
+    p.strings[0].clear();
+  }
 }
 
 void SceneBuilder::displacement(const std::string& name, const ParamList&, const SourceLoc& loc) {
@@ -392,9 +397,10 @@ void SceneBuilder::displacement(const std::string& name, const ParamList&, const
 }
 
 void SceneBuilder::add_light(const std::string& name, const std::string& handle, const ParamList& params,
-                             const SourceLoc& loc, std::optional<bool> casts_shadows) {
+                             const SourceLoc& loc, std::optional<bool> casts_shadows, const char* request) {
   check_light_positions(params, ctm_);  // before WorldBegin: in camera space
   ParamList checked = checked_shader_parameters("LightSource", name, params, diag_, loc);
+  resolve_texture_names(request, name, checked, "lights with its colour alone", loc);
   const bool shadows = casts_shadows ? *casts_shadows : light_casts_shadows(handle, params, loc);
   LightDesc d{name, std::move(checked), ctm_, loc, shadows};
   if (!in_world_) {

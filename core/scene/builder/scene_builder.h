@@ -84,6 +84,11 @@ class SceneBuilder : public RiTarget {
   void close_blocks_left_open_in_world(const SourceLoc& loc);
   void set_ctm(const Matrix4& m);
   void concat(const Matrix4& m);
+  // The texture files `shader`'s parameters name (names_a_texture), found along the texture search
+  // path and made full paths; one not found is a warning at `loc` (its name cleared: the shader
+  // goes without it, as `fallback` says).
+  void resolve_texture_names(const char* request, const std::string& shader, ParamList& params,
+                             const char* fallback, const SourceLoc& loc);
   bool in_world() const { return in_world_; }
   // False while skipping an unselected frame or recording an object: geometry is not built.
   bool building_geometry(const char* request, const SourceLoc& loc);
@@ -119,9 +124,10 @@ class SceneBuilder : public RiTarget {
   // it is singular, as the camera must be inverted.
   Matrix4 checked_camera_transform(const SourceLoc& world_begin);
   void check_crop_window(OutputSettings& out);
-  // casts_shadows: given by a RIS Light; else from "shadowname" and Attribute "light".
+  // casts_shadows: given by a RIS Light; else from "shadowname" and Attribute "light". `request`:
+  // the RIB request that declared it, as its warnings name it.
   void add_light(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc& loc,
-                 std::optional<bool> casts_shadows = std::nullopt);
+                 std::optional<bool> casts_shadows = std::nullopt, const char* request = "LightSource");
   // The builders behind primitive(), one per request (after the common checks: not recording
   // an object, in the world, the frame built, the geometry noted).
   using PrimitiveBuilder = void (SceneBuilder::*)(const PrimitiveRequest&, const ParamList&, const SourceLoc&);

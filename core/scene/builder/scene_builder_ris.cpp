@@ -38,7 +38,7 @@ void SceneBuilder::light(const std::string& name, const std::string& handle, con
     area_light_handles_.insert(handle);
     return;
   }
-  add_light(m.shader, handle, m.params, loc, m.casts_shadows);
+  add_light(m.shader, handle, m.params, loc, m.casts_shadows, "Light");
   // RenderMan 21+ lights are scene objects, not attributes: exporters wrap each in its own
   // AttributeBegin/End (for its transform), and it lights everything after it unless Illuminate
   // switches it off. So it is on in every enclosing attribute state of the world block too.

@@ -50,7 +50,9 @@ std::optional<std::string> find_texture(const std::string& name, const std::vect
 }
 
 bool names_a_texture(const std::string& shader, const Param& param) {
-  return shader == "paintedplastic" && param.name == "texturename" && param.decl.type == ParamType::String;
+  if (param.decl.type != ParamType::String) return false;
+  if (shader == "domelight" || shader == "envlight") return param.name == "mapname" || param.name == "envname";
+  return shader == "paintedplastic" && param.name == "texturename";
 }
 
 }  // namespace darc

@@ -22,7 +22,8 @@ std::vector<std::string> texture_search_path(const std::vector<std::string>& spe
 std::optional<std::string> find_texture(const std::string& name, const std::vector<std::string>& search_path,
                                         const std::string& rib_file);
 
-// The shader parameters that name a texture file (paintedplastic's "texturename").
+// The shader parameters that name a texture file (paintedplastic's "texturename", the dome's
+// "mapname" or "envname").
 bool names_a_texture(const std::string& shader, const Param& param);
 
 }  // namespace darc

@@ -60,8 +60,15 @@ RisLightMapping map_ris_light(const std::string& name, const ParamList& params, 
     m.shader = "distantlight";
     extra = {triple_param("from", ParamType::Point, {0, 0, 0}), triple_param("to", ParamType::Point, {0, 0, 1})};
   } else if (name == "PxrDomeLight") {
-    // Its radiance from every direction, sampled with shadows; the map is not read (yet).
+    // Its radiance from every direction (times its lat-long lightColorMap), sampled with shadows.
     m.shader = "domelight";
+    if (const std::string map = r.text("lightColorMap"); !map.empty()) {
+      Param p;
+      p.name = "mapname";
+      p.decl.type = ParamType::String;
+      p.strings = {map};
+      extra.push_back(std::move(p));
+    }
   } else {
     // Shapes of radiance L (shading/area_lights.h). With areaNormalize the light's power does
     // not change with its size: the radiance is divided by the area.

@@ -3,9 +3,8 @@
 // light's +z axis (the side RenderMan's Pxr lights emit to: ../shared/docs/lookdev.md §2.2).
 // PxrRectLight, PxrDiskLight and PxrSphereLight -> darc's area lights rectlight, disklight and
 // spherelight (the same unit shapes, emitting toward +z where flat; shading/area_lights.h),
-// sampled with soft shadows; their shapes are not drawn. PxrDomeLight -> domelight (a constant
-// radiance from every direction, sampled with shadows; its environment map is dropped). README
-// has the table.
+// sampled with soft shadows; their shapes are not drawn. PxrDomeLight -> domelight (radiance from
+// every direction, its lightColorMap as "mapname": shading/dome_light.h). README has the table.
 #pragma once
 
 #include <string>

@@ -39,6 +39,12 @@ class RisParamReader {
     return !p->decl.is_string() && p->floats.size() >= 3 ? Vec3f{p->floats[0], p->floats[1], p->floats[2]} : fallback;
   }
 
+  // The string `name` holds, or empty when it is absent or not a string.
+  std::string text(const std::string& name) {
+    const Param* p = take(name);
+    return p && p->decl.is_string() && !p->decl.reference && !p->strings.empty() ? p->strings[0] : std::string();
+  }
+
   // The colour of `name`, or nullopt when it is absent or its pattern is not evaluated.
   std::optional<Vec3f> optional_color(const std::string& name) {
     if (!has(name)) return std::nullopt;

@@ -279,15 +279,20 @@ Light "PxrDiskLight" "fill" "float intensity" [3] "int areaNormalize" [1])");
   EXPECT_NEAR(param(only_light(disk).params, "intensity"), 3 / std::numbers::pi, 1e-6) << "over the area pi";
 }
 
-TEST(RisLight, PxrDomeLightIsADomeLightWithShadowsAndItsMapIsDropped) {
+TEST(RisLight, PxrDomeLightIsADomeLightWithShadowsAndItsMapAMapname) {
   Built b = world(R"(Light "PxrDomeLight" "env" "float exposure" [1] "string lightColorMap" ["sky.tex"])");
   const LightDesc& l = only_light(b);
   EXPECT_EQ(l.shader, "domelight");
   EXPECT_EQ(param(l.params, "intensity"), 2.0f);
   EXPECT_TRUE(l.casts_shadows);
+  const Param* map = l.params.find("mapname");
+  ASSERT_NE(map, nullptr);
+  ASSERT_EQ(map->strings.size(), 1u);
+  EXPECT_EQ(map->strings[0], "") << "not found: cleared, so the dome keeps its colour";
   const auto w = warnings(b, "Light");
   ASSERT_EQ(w.size(), 1u);
-  EXPECT_EQ(w[0].message, "PxrDomeLight is mapped to darc's domelight: dropped lightColorMap");
+  EXPECT_NE(w[0].message.find("texture \"sky.tex\" not found"), std::string::npos) << w[0].message;
+  EXPECT_NE(w[0].message.find("domelight lights with its colour alone"), std::string::npos) << w[0].message;
 }
 
 TEST(RisLight, FixedSampleCountIsTheLightsSampleCountAndZeroLeavesDarcsDefault) {
