@@ -35,7 +35,8 @@ const x3::symbols<ParamType>& type_keywords() {
                                                 {"vector", ParamType::Vector},
                                                 {"normal", ParamType::Normal},
                                                 {"hpoint", ParamType::HPoint},
-                                                {"matrix", ParamType::Matrix}});
+                                                {"matrix", ParamType::Matrix},
+                                                {"struct", ParamType::Struct}});
   return keywords;
 }
 
@@ -154,6 +155,8 @@ std::string to_string(ParamType t) {
       return "hpoint";
     case ParamType::Matrix:
       return "matrix";
+    case ParamType::Struct:
+      return "struct";
   }
   return "float";
 }

@@ -12,7 +12,9 @@
 namespace darc {
 
 enum class StorageClass { Constant, Uniform, Varying, Vertex, FaceVarying, FaceVertex };
-enum class ParamType { Float, Integer, String, Color, Point, Vector, Normal, HPoint, Matrix };
+// Struct: only as RenderMan 21+ writes it, "reference struct manifold" (a connection to a pattern's
+// struct output, such as PxrManifold2D's "result").
+enum class ParamType { Float, Integer, String, Color, Point, Vector, Normal, HPoint, Matrix, Struct };
 
 struct ParamDecl {
   StorageClass storage = StorageClass::Uniform;

@@ -1,5 +1,7 @@
 #include "shading/surface_shader.h"
 
+#include "shading/color_texture.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -89,22 +91,6 @@ class PlasticSurface : public SurfaceShader {
  protected:
   float ka_, kd_, ks_, roughness_;
   Vec3f specular_color_;
-};
-
-// paintedplastic (RI Spec 3.2 Appendix A): plastic whose colour is Cs times the texture at
-// (s, t), filtered over the point's footprint.
-class PaintedPlasticSurface : public PlasticSurface {
- public:
-  PaintedPlasticSurface(const ParamList& p, const Textures& textures, int texture)
-      : PlasticSurface(p), textures_(textures), texture_(texture) {}
-  void apply_patterns(ShadingPoint& sp) const override {
-    Vec3f c;
-    if (textures_.lookup(texture_, sp.st, c)) sp.Cs = mul(sp.Cs, c);
-  }
-
- private:
-  const Textures& textures_;
-  int texture_;
 };
 
 // metal and shinymetal: Cs * (Ka ambient + Ks specular + Kr reflection). RI's metal has no Kr
@@ -347,19 +333,11 @@ ShadeResult shade_unshadowed(const SurfaceShader& shader, const ShadingPoint& at
   return {mul(l.Oi, c), l.Oi};
 }
 
-std::unique_ptr<SurfaceShader> make_surface_shader(const std::string& name, const ParamList& params,
-                                                   const SourceLoc& loc, Diagnostics& diag, Textures* textures) {
+namespace {
+
+std::unique_ptr<SurfaceShader> make_untextured_surface_shader(const std::string& name, const ParamList& params,
+                                                              const SourceLoc& loc, Diagnostics& diag) {
   if (name == "constant") return std::make_unique<ConstantSurface>();
-  if (name == "paintedplastic" && textures) {
-    // The scene builder has found the file (an absolute path) or warned and left the name empty.
-    if (const std::string file = params.get_string("texturename", ""); !file.empty()) {
-      std::string reason;
-      const int id = textures->open(file, reason);
-      if (id >= 0) return std::make_unique<PaintedPlasticSurface>(params, *textures, id);
-      diag.warning_once("texture-read:" + file, loc, "Surface",
-                        fmt::format("texture \"{}\" cannot be read ({}): paintedplastic shades without it", file, reason));
-    }
-  }
   if (name == "matte") return std::make_unique<MatteSurface>(params);
   if (name == "plastic" || name == "paintedplastic") return std::make_unique<PlasticSurface>(params);
   if (name == "metal") return std::make_unique<MetalSurface>(params, 0.0f);
@@ -371,6 +349,14 @@ std::unique_ptr<SurfaceShader> make_surface_shader(const std::string& name, cons
   if (name != "defaultsurface")
     diag.warning_once("surface:" + name, loc, "Surface", "unknown surface shader \"" + name + "\": using defaultsurface");
   return std::make_unique<DefaultSurface>();
+}
+
+}  // namespace
+
+std::unique_ptr<SurfaceShader> make_surface_shader(const std::string& name, const ParamList& params,
+                                                   const SourceLoc& loc, Diagnostics& diag, Textures* textures) {
+  auto shader = make_untextured_surface_shader(name, params, loc, diag);
+  return textures ? apply_color_texture(std::move(shader), name, params, *textures, loc, diag) : std::move(shader);
 }
 
 std::unique_ptr<SurfaceShader> make_area_light_surface(const ParamList& p) {

@@ -60,7 +60,8 @@ ShadeResult shade_unshadowed(const SurfaceShader& shader, const ShadingPoint& sp
 // Makes the shader for a RIB Surface call. Unknown names get one warning each and
 // "defaultsurface" (documented in README). Known names: constant, matte, plastic,
 // paintedplastic (plastic with Cs times the texture "texturename", read through `textures`;
-// without them, or when the file cannot be read (a warning), plastic), metal, shinymetal (Kr
+// without them, or when the file cannot be read (a warning), plastic: shading/color_texture.h,
+// which also gives any shader the PxrTexture colour a RIS Bxdf maps to), metal, shinymetal (Kr
 // traces a reflection ray where RSL reads an environment map), mirror, glass, hair = kajiyakay
 // (Kajiya-Kay, PRMan application note 19), chianghair, defaultsurface.
 std::unique_ptr<SurfaceShader> make_surface_shader(const std::string& name, const ParamList& params,

@@ -56,6 +56,21 @@ TEST(RisRequests, AReferenceDeclarationParses) {
   EXPECT_EQ(name, "referenceColor");
 }
 
+TEST(RisRequests, AReferenceToAStructParses) {
+  // PxrTexture's "reference struct manifold" ["m:result"], a connection to PxrManifold2D.
+  auto r = parse_rib(R"RIB(Pattern "PxrTexture" "t" "reference struct manifold" ["m:result"]
+)RIB");
+  EXPECT_TRUE(r->diag.all().empty()) << r->diag.all()[0].str();
+  ASSERT_EQ(r->target.calls.size(), 1u);
+  ASSERT_EQ(r->target.calls[0].params.params.size(), 1u);
+  const Param& p = r->target.calls[0].params.params[0];
+  EXPECT_EQ(p.name, "manifold");
+  EXPECT_TRUE(p.decl.reference);
+  EXPECT_EQ(p.decl.type, ParamType::Struct);
+  EXPECT_EQ(p.strings, Strings{"m:result"});
+  EXPECT_EQ(to_string(p.decl), "reference uniform struct");
+}
+
 TEST(RisRequests, AReferenceWithNumbersIsAnError) {
   auto r = parse_rib("Bxdf \"PxrSurface\" \"s\" \"reference color diffuseColor\" [1 0 0]\nWorldBegin\n");
   ASSERT_EQ(r->errors().size(), 1u);

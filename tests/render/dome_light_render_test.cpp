@@ -14,16 +14,8 @@
 namespace darc {
 namespace {
 
+using test::ortho_view;
 using test::render_image;
-
-// A square orthographic view of `size` pixels over [-half, half]^2 of the xy plane, looking down -z.
-std::string ortho_view(int size, double half) {
-  std::ostringstream s;
-  s << "Format " << size << " " << size << " 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\n"
-    << "Projection \"orthographic\"\nScreenWindow " << -half << " " << half << " " << -half << " " << half
-    << "\nTranslate 0 0 10\n";
-  return s.str();
-}
 
 // RenderMan's convention: a PxrDiffuse of diffuseColor 1 under a PxrDomeLight of intensity 1 has
 // radiance 1. The samples follow the cosine about the normal, so an unshadowed sample of a

@@ -5,47 +5,27 @@
 // map that cannot be found is a warning at its line with the dome keeping its colour.
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imagebuf.h>
-
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <string>
 
 #include "support/darc_command.h"
 #include "support/render.h"
 #include "support/scenes_from_rib.h"
+#include "support/texture_files.h"
 
 namespace darc {
 namespace {
 
+using test::ortho_view;
 using test::render_image;
 using test::ScratchDir;
 
 // A lat-long map of 64 x 32 texels whose texel at (s, t) (texel centres) is rgb(s, t).
-template <class Rgb>
-std::string write_map(const ScratchDir& dir, const std::string& name, Rgb rgb) {
-  constexpr int w = 64, h = 32;
-  OIIO::ImageBuf image(OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::FLOAT));
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const Vec3f c = rgb((x + 0.5f) / w, (y + 0.5f) / h);
-      const float v[3] = {c.x, c.y, c.z};
-      image.setpixel(x, y, v);
-    }
-  const std::string path = (dir / name).string();
-  EXPECT_TRUE(image.write(path));
-  return path;
-}
-
-// Camera on the world's -z axis looking along +z at the origin, orthographic over [-half, half]^2;
-// image rows run down world y.
-std::string ortho_view(int size, double half) {
-  std::ostringstream s;
-  s << "Format " << size << " " << size << " 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\n"
-    << "Projection \"orthographic\"\nScreenWindow " << -half << " " << half << " " << -half << " " << half
-    << "\nTranslate 0 0 10\n";
-  return s.str();
+std::string write_map(const ScratchDir& dir, const std::string& name, const std::function<Vec3f(float, float)>& rgb) {
+  return test::write_rgb_image(dir, name, 64, 32, rgb);
 }
 
 std::string sphere_under(const std::string& light, int pixel_samples = 1) {

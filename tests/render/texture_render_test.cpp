@@ -15,6 +15,7 @@
 #include "support/darc_command.h"
 #include "support/render.h"
 #include "support/scenes_from_rib.h"
+#include "support/texture_files.h"
 
 namespace darc {
 namespace {
@@ -31,20 +32,6 @@ std::string make_checker(const ScratchDir& dir) {
   OIIO::ImageSpec config;
   config.attribute("wrapmodes", "periodic,periodic");
   EXPECT_TRUE(OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, flat, path, config));
-  return path;
-}
-
-// A texture whose left half is red and right half blue, and whose top half (t < 0.5) is brighter.
-std::string make_quadrants(const ScratchDir& dir) {
-  OIIO::ImageBuf image(OIIO::ImageSpec(64, 64, 3, OIIO::TypeDesc::FLOAT));
-  for (int y = 0; y < 64; ++y)
-    for (int x = 0; x < 64; ++x) {
-      const float v = y < 32 ? 1.0f : 0.5f;
-      const float rgb[3] = {x < 32 ? v : 0.0f, 0.0f, x < 32 ? 0.0f : v};
-      image.setpixel(x, y, rgb);
-    }
-  const std::string path = (dir / "quadrants.exr").string();
-  EXPECT_TRUE(image.write(path));
   return path;
 }
 
@@ -95,7 +82,7 @@ TEST(TextureRender, ARecedingCheckerboardAtOneRayPerPixelMatchesSixteenBySixteen
 // OIIO's convention); on a bilinear patch s = u and t = v; on a polygon its "st".
 TEST(TextureRender, SRunsAcrossTheImageAndTDownItOnPatchesAndPolygons) {
   ScratchDir dir("texture_orientation");
-  const std::string texture = make_quadrants(dir);
+  const std::string texture = test::write_quadrants_texture(dir);
   // Seen from +z looking down -z: x to the right, y up. The patch's u runs along +x, v along -y,
   // so its top left is (s, t) = (0, 0): bright red.
   const std::string head = "Format 8 8 1\nPixelSamples 1 1\nProjection \"orthographic\"\nTranslate 0 0 5\nWorldBegin\n"
@@ -118,7 +105,7 @@ TEST(TextureRender, SRunsAcrossTheImageAndTDownItOnPatchesAndPolygons) {
 // A sphere's s follows its longitude: the texture's left half is on one side of it.
 TEST(TextureRender, ASphereIsTexturedByItsParameters) {
   ScratchDir dir("texture_sphere");
-  const std::string texture = make_quadrants(dir);
+  const std::string texture = test::write_quadrants_texture(dir);
   // Looking down the sphere's -z axis from +z: longitudes 0-180 degrees (u < 0.5, red) are at y > 0.
   const std::string rib = "Format 16 16 1\nPixelSamples 1 1\nProjection \"orthographic\"\nScreenWindow -1.2 1.2 -1.2 1.2\n"
                           "Translate 0 0 5\nWorldBegin\nLightSource \"ambientlight\" 1 \"intensity\" [1]\n"
@@ -154,7 +141,7 @@ TEST(TextureRender, AMissingTextureWarnsWhereTheRibNamesItAndShadesWithCs) {
 
 TEST(TextureRender, ATextureIsFoundAlongTheTextureSearchPath) {
   ScratchDir dir("texture_searchpath");
-  make_quadrants(dir);
+  test::write_quadrants_texture(dir);
   const std::string rib = "Option \"searchpath\" \"texture\" [\"/nonexistent:" + dir.path().string() +
                           "\"]\nFormat 8 8 1\nPixelSamples 1 1\nProjection \"orthographic\"\nTranslate 0 0 5\nWorldBegin\n"
                           "LightSource \"ambientlight\" 1 \"intensity\" [1]\n"

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <optional>
+#include <sstream>
 
 #include "support/scenes_from_rib.h"
 
@@ -36,6 +37,14 @@ Image render_image(const Scene& scene, HiderKind hider, int threads) {
 
 Image render_image(const std::string& rib, HiderKind hider, int threads) {
   return render_rib(rib, render_options(hider, threads)).image;
+}
+
+std::string ortho_view(int size, double half) {
+  std::ostringstream s;
+  s << "Format " << size << " " << size << " 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\n"
+    << "Projection \"orthographic\"\nScreenWindow " << -half << " " << half << " " << -half << " " << half
+    << "\nTranslate 0 0 10\n";
+  return s.str();
 }
 
 }  // namespace darc::test

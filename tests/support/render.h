@@ -33,4 +33,9 @@ RenderedFrame render_rib(const std::string& rib, const RenderOptions& options);
 Image render_image(const Scene& scene, HiderKind hider, int threads = 1);
 Image render_image(const std::string& rib, HiderKind hider, int threads = 1);
 
+// The options and camera of a square image `size` pixels wide, one box-filtered sample per pixel,
+// orthographic over [-half, half]^2 of the world's xy plane seen from z = -10 (the camera looks
+// along +z; image rows run down world y): the RIB text before WorldBegin.
+std::string ortho_view(int size, double half);
+
 }  // namespace darc::test

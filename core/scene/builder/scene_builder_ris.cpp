@@ -19,8 +19,9 @@ void SceneBuilder::bxdf(const std::string& name, const std::string& handle, cons
   if (record([=](SceneBuilder& b) { b.bxdf(name, handle, params, loc); })) return;
   const RisSurfaceMapping m = map_ris_bxdf(name, params, ris_patterns_);
   warn_ris_bxdf(name, m, diag_, loc);
-  auto checked = std::make_shared<const ParamList>(
-      checked_shader_parameters("Surface", m.surface.shader, m.surface.params, diag_, loc));
+  ParamList list = checked_shader_parameters("Surface", m.surface.shader, m.surface.params, diag_, loc);
+  resolve_texture_names("Bxdf", m.surface.shader, list, "shades with the PxrTexture's missingColor", loc);
+  auto checked = std::make_shared<const ParamList>(std::move(list));
   attributes_.surface = m.surface.shader;
   attributes_.surface_params = std::move(checked);
   attributes_.surface_loc = loc;

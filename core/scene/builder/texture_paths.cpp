@@ -1,5 +1,7 @@
 #include "core/scene/builder/texture_paths.h"
 
+#include "core/scene/ris/color_texture_params.h"
+
 #include <filesystem>
 
 #include "parser/search_path.h"
@@ -51,6 +53,7 @@ std::optional<std::string> find_texture(const std::string& name, const std::vect
 
 bool names_a_texture(const std::string& shader, const Param& param) {
   if (param.decl.type != ParamType::String) return false;
+  if (param.name == kColorTextureParam) return true;  // any shader's PxrTexture colour
   if (shader == "domelight" || shader == "envlight") return param.name == "mapname" || param.name == "envname";
   return shader == "paintedplastic" && param.name == "texturename";
 }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/scene/ris/color_texture_params.h"
 #include "core/scene/ris/ris_param_reader.h"
 
 namespace darc {
@@ -38,28 +39,52 @@ Param color_param(const std::string& name, Vec3f c) {
   return p;
 }
 
+// A Bxdf's colour input: when a PxrTexture feeds it, the surface gets that texture as its colour
+// texture (shading/color_texture.h: Cs times the texture, so Cs is 1) and the texture's file,
+// manifold and options as parameters; else the input's colour, as before.
+Vec3f base_color(RisParamReader& r, const std::string& name, Vec3f fallback, RisSurface& s) {
+  const std::optional<RisTexture> t = r.texture(name);
+  if (!t) return r.color(name, fallback);
+  Param file;
+  file.name = kColorTextureParam;
+  file.decl.type = ParamType::String;
+  file.strings = {t->filename};
+  Param manifold;
+  manifold.name = kColorTextureManifoldParam;
+  manifold.decl.array_size = 6;
+  manifold.floats = {t->scale_s, t->scale_t, t->offset_s, t->offset_t, float(t->invert_s), float(t->invert_t)};
+  s.params.params.push_back(std::move(file));
+  s.params.params.push_back(std::move(manifold));
+  s.params.params.push_back(number_param(kColorTextureLinearizeParam, float(t->linearize)));
+  s.params.params.push_back(color_param(kColorTextureMissingParam, t->missing_color));
+  for (const std::string& d : t->dropped) s.dropped.push_back(name + "'s PxrTexture " + d);
+  return {1, 1, 1};
+}
+
 float luminance(Vec3f c) { return 0.3f * c.x + 0.6f * c.y + 0.1f * c.z; }  // Disney's tint weights
 
 RisSurface pxr_surface(RisParamReader& r) {
-  RisSurface s{"plastic", {}, r.color("diffuseColor", kPxrSurfaceDiffuseColor), {}};
+  RisSurface s{"plastic", {}, std::nullopt, {}};
+  s.color = base_color(r, "diffuseColor", kPxrSurfaceDiffuseColor, s);
   const float kd = r.number("diffuseGain", 1);
-  s.params.params = {number_param("Ka", kd), number_param("Kd", kd), number_param("Ks", r.number("specularGain", 1)),
+  s.params.params.insert(s.params.params.begin(), {number_param("Ka", kd), number_param("Kd", kd), number_param("Ks", r.number("specularGain", 1)),
                      number_param("roughness", r.number("specularRoughness", kPxrSurfaceSpecularRoughness)),
-                     color_param("specularcolor", r.color("specularFaceColor", {0, 0, 0}))};
+                     color_param("specularcolor", r.color("specularFaceColor", {0, 0, 0}))});
   return s;
 }
 
 RisSurface pxr_disney(RisParamReader& r) {
-  const Vec3f base = r.color("baseColor", kPxrDisneyBaseColor);
+  RisSurface s{"plastic", {}, std::nullopt, {}};
+  const Vec3f base = base_color(r, "baseColor", kPxrDisneyBaseColor, s);
   const float tint = std::clamp(r.number("specularTint", 0), 0.0f, 1.0f);
   const float lum = luminance(base);
   const Vec3f tint_color = lum > 0 ? base / lum : Vec3f{1, 1, 1};
   const Vec3f specular_color = Vec3f{1, 1, 1} * (1 - tint) + tint_color * tint;
-  RisSurface s{"plastic", {}, base, {}};
-  s.params.params = {number_param("Ka", 1), number_param("Kd", 1),
+  s.color = base;
+  s.params.params.insert(s.params.params.begin(), {number_param("Ka", 1), number_param("Kd", 1),
                      number_param("Ks", r.number("specular", kPxrDisneySpecular)),
                      number_param("roughness", r.number("roughness", kPxrDisneyRoughness)),
-                     color_param("specularcolor", specular_color)};
+                     color_param("specularcolor", specular_color)});
   return s;
 }
 
@@ -91,7 +116,8 @@ RisSurfaceMapping map_ris_bxdf(const std::string& name, const ParamList& params,
   } else if (name == "PxrDisney") {
     m.surface = pxr_disney(r);
   } else if (name == "PxrDiffuse") {
-    m.surface = {"matte", {}, r.color("diffuseColor", kPxrDiffuseColor), {}};
+    m.surface = {"matte", {}, std::nullopt, {}};
+    m.surface.color = base_color(r, "diffuseColor", kPxrDiffuseColor, m.surface);
   } else if (name == "PxrConstant") {
     m.surface = {"constant", {}, r.color("emitColor", {1, 1, 1}), {}};
   } else if (name == "PxrMarschnerHair") {
@@ -101,7 +127,8 @@ RisSurfaceMapping map_ris_bxdf(const std::string& name, const ParamList& params,
     m.known = false;
     return m;
   }
-  m.surface.dropped = r.unread();
+  const std::vector<std::string> unread = r.unread();
+  m.surface.dropped.insert(m.surface.dropped.begin(), unread.begin(), unread.end());
   m.unevaluated = r.unevaluated();
   return m;
 }

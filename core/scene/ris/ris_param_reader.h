@@ -45,6 +45,18 @@ class RisParamReader {
     return p && p->decl.is_string() && !p->decl.reference && !p->strings.empty() ? p->strings[0] : std::string();
   }
 
+  // The PxrTexture that colour parameter `name` is connected to, if it is (the parameter is then
+  // read); nullopt otherwise, leaving it to color().
+  std::optional<RisTexture> texture(const std::string& name) {
+    const Param* p = params_.find(name);
+    if (!p || !p->decl.reference || p->strings.empty() || !patterns_) return std::nullopt;
+    const auto it = patterns_->find(pattern_handle(p->strings[0]));
+    if (it == patterns_->end()) return std::nullopt;
+    auto t = texture_pattern(it->second, *patterns_);
+    if (t) take(name);
+    return t;
+  }
+
   // The colour of `name`, or nullopt when it is absent or its pattern is not evaluated.
   std::optional<Vec3f> optional_color(const std::string& name) {
     if (!has(name)) return std::nullopt;

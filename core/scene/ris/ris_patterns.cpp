@@ -55,4 +55,51 @@ std::optional<Vec3f> constant_pattern_color(const RisPattern& pattern) {
   return std::nullopt;
 }
 
+namespace {
+
+float number_of(const Param* p, float fallback) {
+  return p && !p->decl.is_string() && !p->decl.reference && !p->floats.empty() ? p->floats[0] : fallback;
+}
+
+}  // namespace
+
+std::optional<RisTexture> texture_pattern(const RisPattern& pattern, const RisPatterns& patterns) {
+  if (pattern.name != "PxrTexture") return std::nullopt;
+  const ParamList& p = pattern.params;
+  const Param* file = p.find("filename");
+  if (!file || !file->decl.is_string() || file->strings.empty() || file->strings[0].empty()) return std::nullopt;
+  RisTexture t;
+  t.filename = file->strings[0];
+  bool invert_t = number_of(p.find("invertT"), 1) != 0;
+  t.linearize = number_of(p.find("linearize"), 0) != 0;
+  if (const Param* missing = p.find("missingColor");
+      missing && !missing->decl.is_string() && !missing->decl.reference && missing->floats.size() >= 3)
+    t.missing_color = {missing->floats[0], missing->floats[1], missing->floats[2]};
+  for (const Param& q : p.params)
+    if (q.name != "filename" && q.name != "invertT" && q.name != "linearize" && q.name != "missingColor" &&
+        q.name != "manifold")
+      t.dropped.push_back(q.name);
+  const Param* manifold = p.find("manifold");
+  if (manifold && manifold->decl.reference && !manifold->strings.empty()) {
+    const auto it = patterns.find(pattern_handle(manifold->strings[0]));
+    if (it != patterns.end() && it->second.name == "PxrManifold2D") {
+      const ParamList& m = it->second.params;
+      t.scale_s = number_of(m.find("scaleS"), 1);
+      t.scale_t = number_of(m.find("scaleT"), 1);
+      t.offset_s = number_of(m.find("offsetS"), 0);
+      t.offset_t = number_of(m.find("offsetT"), 0);
+      t.invert_s = number_of(m.find("invertS"), 0) != 0;
+      invert_t = invert_t || number_of(m.find("invertT"), 1) != 0;
+      for (const Param& q : m.params)
+        if (q.name != "scaleS" && q.name != "scaleT" && q.name != "offsetS" && q.name != "offsetT" &&
+            q.name != "invertS" && q.name != "invertT" && !(q.name == "angle" && number_of(&q, 0) == 0))
+          t.dropped.push_back("PxrManifold2D " + q.name);
+    } else {
+      t.dropped.push_back(it == patterns.end() ? "manifold (no such Pattern)" : "manifold " + it->second.name);
+    }
+  }
+  t.invert_t = invert_t;
+  return t;
+}
+
 }  // namespace darc

@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/math/vec.h"
 #include "parser/param_list.h"
@@ -29,6 +30,23 @@ std::string pattern_handle(const std::string& reference);
 // The colour of `pattern`'s outputs, or nullopt when darc cannot evaluate the pattern as one
 // colour.
 std::optional<Vec3f> constant_pattern_color(const RisPattern& pattern);
+
+// A PxrTexture as darc reads it: the file and the (s, t) it is looked up at, from its manifold (a
+// PxrManifold2D it references, else the primitive's own s, t): s' = s * scaleS + offsetS, then
+// 1 - s' when inverted, the same for t. RenderMan's invertT is 1 by default on both nodes, for DCC
+// UVs whose v runs up; whether two set flags cancel was not established (lookdev.md §4.3): t is
+// inverted once when either says so. `linearize`: the file holds sRGB-encoded values.
+struct RisTexture {
+  std::string filename;
+  float scale_s = 1, scale_t = 1, offset_s = 0, offset_t = 0;
+  bool invert_s = false, invert_t = true;
+  bool linearize = false;
+  Vec3f missing_color{1, 0, 1};  // what PxrTexture returns when it cannot read its file
+  std::vector<std::string> dropped;  // parameters of the two nodes darc does not use
+};
+
+// `pattern` as a texture, when it is a PxrTexture with a file name.
+std::optional<RisTexture> texture_pattern(const RisPattern& pattern, const RisPatterns& patterns);
 
 // PxrHairColor's physical mode: the colour of hair with `melanin` in [0, 1] (0 white, 1 black) of
 // which `redness` in [0, 1] is pheomelanin. The pigment concentrations and their absorption

@@ -200,7 +200,8 @@ Bxdf "PxrDiffuse" "d" "reference color diffuseColor" ["c:resultRGB"])");
 
 TEST(RisPattern, OtherPatternsWarnOnceAndTheBxdfKeepsItsDefaultColour) {
   Built b;
-  const Material m = sphere_material(R"(Pattern "PxrTexture" "tex" "string filename" ["wood.tex"]
+  // (A PxrTexture is evaluated: RisBxdf.APxrTextureFeedingTheColour... below.)
+  const Material m = sphere_material(R"(Pattern "PxrChecker" "tex" "float frequency" [8]
 Bxdf "PxrSurface" "s" "reference color diffuseColor" ["tex:resultRGB"]
 Bxdf "PxrSurface" "s2" "reference color diffuseColor" ["tex:resultRGB"]
 Bxdf "PxrSurface" "s3" "reference color diffuseColor" ["nowhere:resultRGB"] "reference float diffuseGain" ["tex:resultR"])",
@@ -210,7 +211,7 @@ Bxdf "PxrSurface" "s3" "reference color diffuseColor" ["nowhere:resultRGB"] "ref
   const auto w = warnings(b);
   ASSERT_EQ(w.size(), 3u);
   EXPECT_EQ(w[0].message,
-            "PxrSurface: \"diffuseColor\" (Pattern \"tex\" is a PxrTexture, which darc does not evaluate) keeps its "
+            "PxrSurface: \"diffuseColor\" (Pattern \"tex\" is a PxrChecker, which darc does not evaluate) keeps its "
             "default colour");
   EXPECT_TRUE(contains(w[1].message, "no Pattern \"nowhere\"")) << w[1].message;
   EXPECT_TRUE(contains(w[2].message, "\"diffuseGain\"")) << w[2].message;
@@ -293,6 +294,31 @@ TEST(RisLight, PxrDomeLightIsADomeLightWithShadowsAndItsMapAMapname) {
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].message.find("texture \"sky.tex\" not found"), std::string::npos) << w[0].message;
   EXPECT_NE(w[0].message.find("domelight lights with its colour alone"), std::string::npos) << w[0].message;
+}
+
+TEST(RisBxdf, APxrTextureFeedingTheColourBecomesTheSurfacesColourTexture) {
+  Built b = world(R"(Pattern "PxrManifold2D" "m" "float scaleS" [4] "float offsetT" [0.25] "int invertT" [0]
+Pattern "PxrTexture" "t" "string filename" ["wood.tex"] "int invertT" [0] "int linearize" [1] "float blur" [0.1] "reference struct manifold" ["m:result"]
+Bxdf "PxrSurface" "s" "reference color diffuseColor" ["t:resultRGB"]
+Sphere 1 -1 1 360)");
+  ASSERT_EQ(b.scenes.size(), 1u);
+  const Material& m = b.scenes[0].materials.back();
+  EXPECT_EQ(m.surface, "plastic");
+  EXPECT_EQ(m.color, (Vec3f{1, 1, 1})) << "Cs 1, times the texture";
+  const Param* file = m.surface_params.find("__colortexture");
+  ASSERT_NE(file, nullptr);
+  EXPECT_EQ(file->strings, std::vector<std::string>{""}) << "wood.tex is not found here: cleared";
+  const Param* manifold = m.surface_params.find("__colortexture_manifold");
+  ASSERT_NE(manifold, nullptr);
+  EXPECT_EQ(manifold->floats, (std::vector<float>{4, 1, 0, 0.25f, 0, 0})) << "both invertT 0: t as it is";
+  EXPECT_EQ(m.surface_params.get_float("__colortexture_linearize", 0), 1.0f);
+  bool dropped_blur = false, not_found = false;
+  for (const Diagnostic& d : warnings(b)) {
+    dropped_blur |= d.message.find("diffuseColor's PxrTexture blur") != std::string::npos;
+    not_found |= d.message.find("texture \"wood.tex\" not found") != std::string::npos;
+  }
+  EXPECT_TRUE(dropped_blur);
+  EXPECT_TRUE(not_found);
 }
 
 TEST(RisLight, FixedSampleCountIsTheLightsSampleCountAndZeroLeavesDarcsDefault) {
