@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/scene/ris/color_texture_params.h"
+#include "shading/shader_params.h"
 
 namespace darc {
 
@@ -82,8 +83,7 @@ std::unique_ptr<SurfaceShader> apply_color_texture(std::unique_ptr<SurfaceShader
       settings.invert_t = m->floats[5] != 0;
     }
     settings.linearize = params.get_float(kColorTextureLinearizeParam, 0) != 0;
-    if (const Param* c = params.find(kColorTextureMissingParam); c && c->floats.size() >= 3)
-      settings.missing = {c->floats[0], c->floats[1], c->floats[2]};
+    settings.missing = param_color(params, kColorTextureMissingParam, settings.missing);
     // Found by the scene builder, or not found there (warned, and the name cleared): PxrTexture
     // then gives its missing colour.
     if (file.empty()) return with_color_texture(std::move(shader), textures, -1, settings);

@@ -1,6 +1,7 @@
 #include "shading/geometry_light.h"
 
 #include "shading/area_lights.h"
+#include "shading/shader_params.h"
 
 #include <algorithm>
 #include <cmath>
@@ -88,12 +89,6 @@ class GeometryLight : public Light {
   std::vector<float> ball_areas_, cumulative_;
   float total_ = 0;
 };
-
-Vec3f param_color(const ParamList& p, const char* name, Vec3f fallback) {
-  const Param* x = p.find(name);
-  if (!x || x->floats.size() < 3) return fallback;
-  return {x->floats[0], x->floats[1], x->floats[2]};
-}
 
 }  // namespace
 

@@ -7,16 +7,11 @@
 #include "core/scene/builder/shader_parameter_checks.h"
 #include "shading/area_lights.h"
 #include "shading/dome_light.h"
+#include "shading/shader_params.h"
 
 namespace darc {
 
 namespace {
-
-Vec3f param_color(const ParamList& p, const char* name, Vec3f fallback) {
-  const Param* x = p.find(name);
-  if (!x || x->floats.size() < 3) return fallback;
-  return {x->floats[0], x->floats[1], x->floats[2]};
-}
 
 Vec3d param_point(const ParamList& p, const char* name, Vec3d fallback) {
   const Param* x = p.find(name);

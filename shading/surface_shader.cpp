@@ -1,6 +1,7 @@
 #include "shading/surface_shader.h"
 
 #include "shading/color_texture.h"
+#include "shading/shader_params.h"
 
 #include <fmt/format.h>
 
@@ -15,12 +16,6 @@
 namespace darc {
 
 namespace {
-
-Vec3f param_color(const ParamList& p, const char* name, Vec3f fallback) {
-  const Param* x = p.find(name);
-  if (!x || x->floats.size() < 3) return fallback;
-  return {x->floats[0], x->floats[1], x->floats[2]};
-}
 
 // RI diffuse() for one light: Lambert in the hemisphere around n.
 Vec3f diffuse_term(const Vec3f& n, const LightContribution& lc) {

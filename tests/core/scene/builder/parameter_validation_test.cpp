@@ -283,6 +283,22 @@ std::vector<Row> shader_rows() {
       {"light-count", in_world("LightSource \"pointlight\" 1 \"intensity\" [1 2]"),
        error(2, "LightSource", "\"intensity\" must be one number, found 2 numbers"),
        [](const Scene& s) { EXPECT_TRUE(s.lights.empty()); }},
+      {"light-map-missing", in_world("LightSource \"domelight\" 1 \"string mapname\" [\"no-such-sky.exr\"]"),
+       warning(2, "LightSource",
+               "texture \"no-such-sky.exr\" not found (searched beside the RIB file): domelight lights with its colour "
+               "alone"),
+       [light](const Scene& s) {
+         const Param* map = light(s).find("mapname");
+         ASSERT_TRUE(map);
+         EXPECT_EQ(map->strings.at(0), "") << "cleared: the dome keeps its colour";
+       }},
+      {"pxrtexture-missing",
+       in_world("Pattern \"PxrTexture\" \"t\" \"string filename\" [\"no-such-wood.tex\"]\n"
+                "Bxdf \"PxrSurface\" \"s\" \"reference color diffuseColor\" [\"t:resultRGB\"]"),
+       warning(3, "Bxdf",
+               "texture \"no-such-wood.tex\" not found (searched beside the RIB file): plastic shades with the "
+               "PxrTexture's missingColor"),
+       [](const Scene&) {}},
       {"arealight-count", in_world("AreaLightSource \"arealight\" 1 \"intensity\" [1 2]"),
        error(2, "AreaLightSource", "\"intensity\" must be one number, found 2 numbers"), [](const Scene&) {}},
   };
