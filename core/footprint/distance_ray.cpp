@@ -30,6 +30,13 @@ DistanceRay make_distance_ray(const Ray& ray, const RayFootprint& footprint) {
   r.t_max = ray.tmax;
   r.reach = footprint.reach_bound();
   r.footprint = &footprint;
+  r.depth_min = r.t_min * r.ray_length;
+  if (footprint.start_half_space(ray.o, ray.d, r.start)) {
+    r.has_start = true;
+    r.start.offset = 0;  // relative to the origin
+    const float lowest_origin = -0.5f * (std::abs(dot(footprint.dox, r.dir)) + std::abs(dot(footprint.doy, r.dir)));
+    r.depth_min = std::min(r.depth_min, lowest_origin);
+  }
   return r;
 }
 

@@ -20,6 +20,16 @@ struct DistanceRay {
   float t_min = 0, t_max = 0;
   ReachBound reach;        // the footprint's reach at ray parameter t (RayFootprint::reach_bound)
   const RayFootprint* footprint = nullptr;
+  // A footprint whose sub-rays start on a plane and all leave it to one side (a shadow ray's
+  // receiving patch, RayFootprint::start_half_space). The patch leans along the ray (a strand's
+  // band runs along the strand), so its sub-rays start at different depths: a neighbour beside
+  // it can sit at depth <= t_min on the centre ray and still be met by the sub-rays from the
+  // patch's near side (the curve intersector's StartCut). `start` is relative to the origin.
+  bool has_start = false;
+  StartHalfSpace start;
+  // The least depth (t * ray_length) of a point ahead of the sub-rays: t_min's, or with a start
+  // half-space the lowest of the sub-rays' origins.
+  float depth_min = 0;
 };
 
 DistanceRay make_distance_ray(const Ray& ray, const RayFootprint& footprint);

@@ -259,4 +259,18 @@ bool polygon_coverage(const FootprintFrame& frame, std::span<const Vec3f> corner
   return true;
 }
 
+double footprint_area_within(std::span<const FootprintHalfPlane> half_planes) {
+  Point2 a[kMaxClipCorners], b[kMaxClipCorners];
+  a[0] = {-0.5, -0.5}, a[1] = {0.5, -0.5}, a[2] = {0.5, 0.5}, a[3] = {-0.5, 0.5};
+  int n = 4;
+  Point2* in = a;
+  Point2* out = b;
+  for (size_t i = 0; i < half_planes.size() && i < size_t(kMaxPolygonCorners + 2) && n > 0; ++i) {
+    n = clip(in, n, HalfPlane{half_planes[i].c, half_planes[i].cu, half_planes[i].cv}, out);
+    std::swap(in, out);
+  }
+  Point2 centroid;
+  return n >= 3 ? area_and_centroid(in, n, centroid) : 0.0;
+}
+
 }  // namespace darc

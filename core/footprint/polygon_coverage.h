@@ -43,4 +43,13 @@ struct PolygonFootprintHit {
 // outside the footprint, or outside the interval).
 bool polygon_coverage(const FootprintFrame& frame, std::span<const Vec3f> corners, PolygonFootprintHit& hit);
 
+// A half-plane c + cu u + cv v >= 0 of footprint coordinates.
+struct FootprintHalfPlane {
+  double c, cu, cv;
+};
+
+// The area of the footprint square [-1/2, 1/2]^2 inside every one of the half-planes (at most
+// kMaxPolygonCorners + 2 of them).
+double footprint_area_within(std::span<const FootprintHalfPlane> half_planes);
+
 }  // namespace darc

@@ -49,6 +49,45 @@ Vec3f transmittance(const Scene& scene, uint32_t skip_strand = kNoStrand, Distan
   return trace_footprint_transmittance(ctx, ray, fp, counters, scratch.at(0), skip_strand);
 }
 
+// A shadow ray's receiving patch leans along the ray (a strand's band runs along the strand,
+// a light off its side): sub-ray (u, v) starts at (u, v, 0.8 u) and runs along +z. A strand
+// along y of width w at x_A, depth z_A is met by the sub-rays |u - x_A| <= w/2 that start
+// before it, 0.8 u < z_A, whatever the centre ray's start (z = 0) says.
+Vec3f leaning_patch_transmittance(float x_a, float z_a, float width) {
+  std::ostringstream s;
+  s << "Curves \"linear\" [2] \"nonperiodic\" \"P\" [" << x_a << " -3 " << z_a << "  " << x_a << " 3 " << z_a
+    << "] \"constantwidth\" [" << width << "]\n";
+  const Scene scene = build_scene(s.str());
+  Diagnostics diag([](const Diagnostic&) {});
+  SceneShading shading(scene, diag);
+  Tracer tracer(scene);
+  HiderContext base{scene, shading, tracer, 0, 1, 1};
+  DistanceContext ctx = make_distance_context(base, {});
+  RayFootprint fp;
+  fp.dox = Vec3f{1, 0, 0.8f};
+  fp.doy = Vec3f{0, 1, 0};
+  fp.form = FootprintForm::Parallel;
+  Ray ray{{0, 0, 0}, {0, 0, 1}};
+  RayCounters counters;
+  RayScratchStack scratch(scene.accel);
+  return trace_footprint_transmittance(ctx, ray, fp, counters, scratch.at(0), kNoStrand);
+}
+
+TEST(FootprintTransmittance, ALeaningPatchsNearSideMeetsAStrandBehindItsCentre) {
+  // Behind the centre's start (z_A = -0.15 < 0), but the sub-rays at u in [-0.35, -0.25] start
+  // at depth <= -0.2: they meet it (the head-hair's clumps: shadow rays from a strand missed the
+  // neighbours beside its band).
+  EXPECT_NEAR(leaning_patch_transmittance(-0.3f, -0.15f, 0.1f).x, 0.9f, 0.02f);
+}
+
+TEST(FootprintTransmittance, ALeaningPatchsFarSideStartsPastAStrandAheadOfItsCentre) {
+  // Ahead of the centre (z_A = 0.15), but the sub-rays at u in [0.25, 0.35] start at depth
+  // >= 0.2, past it: nothing meets it.
+  EXPECT_NEAR(leaning_patch_transmittance(0.3f, 0.15f, 0.1f).x, 1.0f, 1e-6f);
+  // Half of them start before it when it sits at the band's middle depth (0.8 * 0.3 = 0.24).
+  EXPECT_NEAR(leaning_patch_transmittance(0.3f, 0.24f, 0.1f).x, 0.95f, 0.02f);
+}
+
 TEST(FootprintTransmittance, StrandsStackedInDepthOccludeTheSamePoints) {
   // k strands of coverage c = 0.25 and opacity o over the same quarter of the footprint: that
   // quarter transmits (1 - o)^k, the rest everything.

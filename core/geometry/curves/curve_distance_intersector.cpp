@@ -1,4 +1,6 @@
 #include "core/geometry/curves/curve_distance_intersector.h"
+
+#include "core/footprint/polygon_coverage.h"
 #include "core/geometry/curves/curve_intersector.h"
 
 #include <algorithm>
@@ -46,6 +48,42 @@ struct FootprintAt {
 struct DistanceState {
   float ray_length;
   float t_min, t_max;
+  float depth_min;  // DistanceRay::depth_min
+  // DistanceRay::start: whether the sub-rays start on a plane leaning along the ray, then a leaf
+  // at any depth may be ahead of some of them (StartCut decides); else ahead means past t_min.
+  bool has_start = false;
+  float start_margin = 0;
+  Vec3f start_normal;  // unit, in this frame, toward where the sub-rays go
+  // Whether a (sub-)curve of half-width hw lies wholly behind the start plane: no sub-ray meets it.
+  bool behind_start(const Vec3f cp[4], float hw) const {
+    if (!has_start) return false;
+    for (int i = 0; i < 4; ++i)
+      if (!(dot(start_normal, cp[i]) < -hw)) return false;
+    return true;
+  }
+  bool ahead(float t) const { return t < t_max && (has_start || t > t_min); }
+  // With a start half-space, the depth of sub-ray (u, v)'s origin is u start_du + v start_dv
+  // (the start patch leans along the ray): only the sub-rays that start before a strand meet it.
+  float start_du = 0, start_dv = 0;
+  float start_depth_max = 0;  // the farthest origin's depth
+  // The sub-rays (u, v) with u cu + v cv < z0 start before the strand where they cross it.
+  struct StartCut {
+    float cu = 0, cv = 0, z0 = 1;
+    float share() const { return trapezoid_cdf(z0, std::abs(cu), std::abs(cv)); }
+    CoverageMask mask() const {
+      CoverageMask m = 0;
+      const float step = 1.0f / kMaskSide;
+      for (int j = 0; j < kMaskSide; ++j)
+        for (int i = 0; i < kMaskSide; ++i) {
+          const float u = (float(i) + 0.5f) * step - 0.5f, v = (float(j) + 0.5f) * step - 0.5f;
+          if (u * cu + v * cv < z0) m |= CoverageMask{1} << (j * kMaskSide + i);
+        }
+      return m;
+    }
+  };
+  bool best_cut = false;  // whether the best leaf is cut (cut below)
+  StartCut cut;
+  CoverageMask cut_points = 0;  // the best leaf's band points that are cut (none: a band too thin)
   const RayFootprint* footprint;
   Vec3f frame_x, frame_y;  // the ray frame, its x axis along the segment's projected chord
   CoverageModel model;
@@ -251,15 +289,54 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
   if (!(half_width > 0.0f)) return;
   Vec3f pc = bezier_evaluate(cp, w);
   float t = pc.z / s.ray_length;
-  if (!(t > s.t_min && t < s.t_max)) return;
+  if (!s.ahead(t)) return;
+  // A start patch leaning along the ray (DistanceRay::start) has sub-rays that start past a
+  // strand near it, others before it: a neighbour beside it can be met at depth <= t_min on the
+  // centre ray by the sub-rays from the patch's near side, and one just ahead of the centre is
+  // not met by those from its far side. Only the sub-rays that start before the strand where
+  // they cross it count: to first order a half-plane of the footprint (StartCut).
+  t = std::max(t, s.t_min);
   float d = hypot2(pc.x, pc.y);
   FootprintAt f = s.footprint_at(t);
   float tx = 1.0f, ty = 0.0f;
-  if (!unit_2d(bezier_derivative(cp, w), 0.0f, tx, ty) && !unit_2d(cp[3] - cp[0], 0.0f, tx, ty)) {
+  const Vec3f tangent = bezier_derivative(cp, w);
+  if (!unit_2d(tangent, 0.0f, tx, ty) && !unit_2d(cp[3] - cp[0], 0.0f, tx, ty)) {
     tx = 1.0f;
     ty = 0.0f;
   }
   float coverage = end_on ? end_on_coverage(s, f, pc.x, pc.y, half_width) : band_coverage(s, f, d, half_width, tx, ty);
+  DistanceState::StartCut cut;
+  CoverageMask cut_points = 0;
+  float started = 1.0f;
+  // Each sub-ray starts t_min past its origin.
+  const float start_offset = s.t_min * s.ray_length + s.start_margin;
+  const bool near_start = s.has_start && pc.z - half_width < s.start_depth_max + start_offset;
+  if (near_start && coverage > 0.0f) {
+    // The strand's depth along its projected tangent: dz per unit of 2D length (0 seen side-on;
+    // an end-on leaf keeps its depth).
+    const float along = hypot2(tangent.x, tangent.y);
+    const float slope = along > std::abs(tangent.z) * 1e-3f ? tangent.z / along : 0.0f;
+    cut.cu = s.start_du - slope * (f.ax_x * tx + f.ax_y * ty);
+    cut.cv = s.start_dv - slope * (f.ay_x * tx + f.ay_y * ty);
+    cut.z0 = pc.z - slope * (pc.x * tx + pc.y * ty) - start_offset;
+    const float share = cut.share();
+    if (!(share > 0.0f)) return;
+    if (share < 1.0f) {
+      // The cut and the band are not independent (a strand beside the patch is met only by the
+      // sub-rays on its side, whose origins lie at their own depths): the share of the band's
+      // part of the footprint that is cut, exactly, and its mask points.
+      const double across_u = -ty * f.ax_x + tx * f.ax_y, across_v = -ty * f.ay_x + tx * f.ay_y;
+      const double across_0 = -ty * pc.x + tx * pc.y;
+      const FootprintHalfPlane planes[3] = {{half_width + across_0, -across_u, -across_v},
+                                            {half_width - across_0, across_u, across_v},
+                                            {cut.z0, -cut.cu, -cut.cv}};
+      const double band_area = footprint_area_within(std::span(planes, 2));
+      started = band_area > 0 ? float(std::min(1.0, footprint_area_within(planes) / band_area)) : share;
+      if (!(started > 0.0f)) return;
+      const FootprintSquare sq{f.ax_x, f.ax_y, f.ay_x, f.ay_y};
+      cut_points = band_mask(sq, pc.x, pc.y, -ty, tx, half_width) & cut.mask();
+    }
+  }
   const bool cut_start =
       ends.start && (!ends.start_is_joint || tx * ends.start_tx + ty * ends.start_ty > kDistinctPieceCos);
   const bool cut_end = ends.end && (!ends.end_is_joint || -(tx * ends.end_tx + ty * ends.end_ty) > kDistinctPieceCos);
@@ -282,7 +359,7 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
     s.beyond_ends |= m;
     beyond = float(mask_count(m)) / float(kMaskSide * kMaskSide);
   }
-  coverage *= within_ends;
+  coverage *= within_ends * started;
   if (coverage > 0.0f) s.add_piece({coverage, pc.x, pc.y, tx, ty, half_width, end_on, cut_start, cut_end});
   s.best_within_ends = std::max(s.best_within_ends, coverage);
   // The best leaf (its depth and shading point) is chosen by all it covers.
@@ -296,6 +373,9 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
     s.found = true;
     s.coverage = coverage;
     s.t = t;
+    s.best_cut = near_start && started < 1.0f;
+    s.cut = cut;
+    s.cut_points = cut_points;
     s.u = u;
     s.distance = d;
     s.px = pc.x;
@@ -393,7 +473,8 @@ void distance_recursive(const Vec3f cp[4], const float width[4], float u0, float
                                : std::min(std::min(sub_cp[0].z, sub_cp[1].z), std::min(sub_cp[2].z, sub_cp[3].z));
     // Cull with the half-width plus the largest footprint over the sub-curve's depth range.
     float margin = hw + s.reach_over_depths(z_lo - hw, z_hi + hw);
-    if (!bound_overlaps_ray(sub_cp, margin, s.t_min * s.ray_length, s.t_max * s.ray_length)) continue;
+    if (!bound_overlaps_ray(sub_cp, margin, s.depth_min, s.t_max * s.ray_length)) continue;
+    if (s.behind_start(sub_cp, hw)) continue;
     distance_recursive(sub_cp, sub_width, half == 0 ? u0 : u_mid, half == 0 ? u_mid : u1, depth - 1, ends, s);
   }
 }
@@ -445,7 +526,7 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
                               ? ray.reach.at(t_far)
                               : ray.reach.max_over(std::max(0.0f, (z_lo - hw) / ray.ray_length), t_far);
   const float margin = hw + reach_far;
-  if (z_hi + margin < ray.t_min * ray.ray_length || z_lo - margin > ray.t_max * ray.ray_length) return false;
+  if (z_hi + margin < ray.depth_min || z_lo - margin > ray.t_max * ray.ray_length) return false;
   // Turn the frame in its plane so that x runs along the projected chord: the hull is then thin
   // in y and its bound tight (Nakamaru & Ohno's frame). A chord seen end-on keeps the frame.
   float cx = a[3] - a[0], cy = b[3] - b[0];
@@ -458,7 +539,7 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   }
   Vec3f ray_cp[4];
   for (int i = 0; i < 4; ++i) ray_cp[i] = {cos_r * a[i] + sin_r * b[i], -sin_r * a[i] + cos_r * b[i], z[i]};
-  if (!bound_overlaps_ray(ray_cp, margin, ray.t_min * ray.ray_length, ray.t_max * ray.ray_length)) return false;
+  if (!bound_overlaps_ray(ray_cp, margin, ray.depth_min, ray.t_max * ray.ray_length)) return false;
 
   DistanceState s;
   s.frame_x = ray.frame_x * cos_r + ray.frame_y * sin_r;
@@ -466,6 +547,17 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   s.ray_length = ray.ray_length;
   s.t_min = ray.t_min;
   s.t_max = ray.t_max;
+  s.depth_min = ray.depth_min;
+  if (ray.has_start) {
+    s.has_start = true;
+    const float n = length(ray.start.n);
+    s.start_margin = ray.start.margin / n;
+    s.start_normal = Vec3f{dot(ray.start.n, s.frame_x), dot(ray.start.n, s.frame_y), dot(ray.start.n, ray.dir)} / n;
+    s.start_du = dot(ray.footprint->dox, ray.dir);
+    s.start_dv = dot(ray.footprint->doy, ray.dir);
+    s.start_depth_max = 0.5f * (std::abs(s.start_du) + std::abs(s.start_dv));
+    if (s.behind_start(ray_cp, hw)) return false;
+  }
   s.footprint = ray.footprint;
   s.model = model;
   s.oriented = set.oriented(segment);
@@ -517,6 +609,14 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   hit.u = s.u;
   hit.distance = s.distance;
   hit.mask = compute_mask ? fragment_mask(s, fall, hit.coverage) : kFullMask;
+  if (compute_mask && s.best_cut) {
+    // Its points are where the strand is met, not the ones nearest its axis: strands of a clump
+    // beside the start patch are all met on the same side of it, and nearest points cut there
+    // spread the coverage they cannot hold over the other side (head-hair: shadows through the
+    // crown's clumps twice as dark as the sub-rays find them).
+    const CoverageMask started = s.cut_points != 0 ? s.cut_points : hit.mask & s.cut.mask();
+    if (started != 0) hit.mask = started;
+  }
   return true;
 }
 
