@@ -180,6 +180,30 @@ class ABuffer {
     return sum * (1.0f / kPoints);
   }
 
+  // How much of each footprint point is the fragment f seen at: its spread coverage there times
+  // the light still reaching the point past what was composited in front (the weights its
+  // shadow rays' points are averaged with, FootprintPointWeights). False when none is seen.
+  bool seen_points(const Fragment& f, FootprintPointWeights& w) const {
+    const CoverageSpread spread = spread_coverage(f.mask, f.coverage);
+    float sum = 0;
+    for (int b = 0; b < kPoints; ++b) {
+      const Vec3f& tr = point_transmittance_[b];
+      w[size_t(b)] = spread.at(b) * (tr.x + tr.y + tr.z);
+      sum += w[size_t(b)];
+    }
+    return sum > 0;
+  }
+  // The transmittance averaged over the footprint points with weights w (not all zero).
+  Vec3f transmittance(const FootprintPointWeights& w) const {
+    Vec3f sum{};
+    float total = 0;
+    for (int b = 0; b < kPoints; ++b) {
+      sum += point_transmittance_[b] * w[size_t(b)];
+      total += w[size_t(b)];
+    }
+    return sum * (1.0f / total);
+  }
+
   // The depth of the nearest pending fragment (infinity when none): compositing up to a depth
   // before it does nothing.
   float nearest_pending() const { return nearest_pending_; }

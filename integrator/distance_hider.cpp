@@ -376,6 +376,16 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
   FootprintSecondaryRays(const DistanceContext& ctx, RayCounters& counters, RayScratchStack& scratch)
       : ctx_(ctx), counters_(counters), scratch_(scratch) {}
 
+  // A surface seen on part of the footprint (ABuffer::surface_at_visible_part): the points it is
+  // seen at, and the whole footprint's patch on its plane (centre and axes), whose points are
+  // the footprint's.
+  struct SeenSurface {
+    FootprintPointWeights weights;
+    Vec3f centre, dPdx, dPdy;
+  };
+  // The surface being shaded (null: none, or not seen on part of the footprint).
+  void shading(const SeenSurface* seen) { seen_ = seen; }
+
   Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance, const RayFootprint* incoming,
                              const PathState& path) override {
     const SecondaryRaySettings& s = ctx_.base.secondary;
@@ -386,6 +396,8 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
         incoming ? kShadowPatchElongation * std::max(length(incoming->dox + incoming->ddx * at.t),
                                                      length(incoming->doy + incoming->ddy * at.t))
                  : std::numeric_limits<float>::infinity();
+    if (seen_ && !at.is_curve && length(seen_->dPdx) <= max_extent && length(seen_->dPdy) <= max_extent)
+      return seen_surface_transmittance(at, l, distance, path);
     const RayFootprint footprint = shadow_footprint(at, distance, ctx_.min_radius, max_extent);
     HitFilter filter = shadow_filter(at);
     uint32_t local;
@@ -397,6 +409,37 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
     return trace_footprint_transmittance(ctx_, ray, footprint, counters_,
                                          scratch_.at(size_t(path.depth) + 1), filter,
                                          stopping_transmittance(s, path.weight, kDistanceMinTransmittance));
+  }
+
+  // A surface seen on part of the footprint is lit where it is seen: the shadow ray leaves the
+  // whole footprint's patch and its points are averaged with the weights they are seen with.
+  // The seen part's bounding box instead (RayFootprint::part) takes in the points between what
+  // is seen: on a scalp seen through hair, the points under the strands, in their shadows.
+  Vec3f seen_surface_transmittance(const Interaction& at, const Vec3f& l, float distance, const PathState& path) {
+    const SecondaryRaySettings& s = ctx_.base.secondary;
+    Interaction patch = at;
+    patch.P = seen_->centre;
+    patch.dPdx = seen_->dPdx;
+    patch.dPdy = seen_->dPdy;
+    Vec3f dir = l;
+    float to_light = distance;
+    if (std::isfinite(distance)) {
+      dir = at.P + l * distance - patch.P;
+      to_light = length(dir);
+      dir = dir / to_light;
+    }
+    const RayFootprint footprint =
+        shadow_footprint(patch, to_light, ctx_.min_radius, std::numeric_limits<float>::infinity());
+    HitFilter filter = shadow_filter(at);
+    uint32_t local;
+    if (ctx_.base.scene.prim_kind(at.primitive, local) == Scene::PrimKind::Surface) {
+      filter.origin_layer = ctx_.base.scene.surfaces.layer(local);
+      filter.origin_layer_min_t = 4 * footprint.reach(0);
+    }
+    return trace_footprint_transmittance(ctx_, Ray{patch.P, dir, s.ray_offset, to_light}, footprint, counters_,
+                                         scratch_.at(size_t(path.depth) + 1), filter,
+                                         stopping_transmittance(s, path.weight, kDistanceMinTransmittance),
+                                         &seen_->weights);
   }
 
   Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint* footprint, const PathState& next,
@@ -413,6 +456,7 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
   const DistanceContext& ctx_;
   RayCounters& counters_;
   RayScratchStack& scratch_;
+  const SeenSurface* seen_ = nullptr;
 };
 
 }  // namespace
@@ -446,8 +490,19 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const
         f.seen_share);
     auto visible = [&] { return path.weight * level.abuffer.visibility_weight(f); };
     const LazyWeight weight(visible);
+    // A surface seen on part of the footprint: its shadow rays average over the points it is
+    // seen at (FootprintSecondaryRays::seen_surface_transmittance).
+    FootprintSecondaryRays::SeenSurface seen;
+    const bool seen_part = f.moved && f.patch_u > 0 && f.patch_v > 0 && level.abuffer.seen_points(f, seen.weights);
+    if (seen_part) {
+      seen.dPdx = at.dPdx / f.patch_u;
+      seen.dPdy = at.dPdy / f.patch_v;
+      seen.centre = at.P - seen.dPdx * f.sub_u - seen.dPdy * f.sub_v;
+    }
+    secondary.shading(seen_part ? &seen : nullptr);
     ShadedPoint r = shade_with_secondary_rays(ctx.base.shading, ctx.base.secondary, at, normalize(shading_ray.d),
                                               &seen_footprint, path.depth, weight, secondary, counters);
+    secondary.shading(nullptr);
     return {r.Ci, r.Oi};
   };
 
@@ -462,7 +517,7 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const
 
 Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
                                     RayCounters& counters, RayScratch& scratch, const HitFilter& filter,
-                                    float min_transmittance) {
+                                    float min_transmittance, const FootprintPointWeights* point_weights) {
   const Scene& scene = ctx.base.scene;
   const CurveSet& cs = scene.curves;
   HitFilter shadow = filter;
@@ -480,7 +535,7 @@ Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, 
     return {Vec3f{}, shadow_opacity(scene.materials[material], scene.materials[material].opacity)};
   };
   collect_fragments(ctx, ray, footprint, counters, scratch, opacity, shadow, min_transmittance);
-  return scratch.abuffer.transmittance();
+  return point_weights ? scratch.abuffer.transmittance(*point_weights) : scratch.abuffer.transmittance();
 }
 
 Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,

@@ -148,9 +148,12 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const
 // Hits `filter` skips are left out (the strand or surface a shadow ray starts on); each primitive
 // blocks by its Transmission attribute (shadow_opacity). Opacity is the primitive's Os: shaders
 // that change Oi are not consulted.
+// With `point_weights`, the transmittance is their weighted mean over the footprint's points
+// instead (the points of a receiving patch where the receiver is seen).
 Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
                                     RayCounters& counters, RayScratch& scratch, const HitFilter& filter,
-                                    float min_transmittance = kDistanceMinTransmittance);
+                                    float min_transmittance = kDistanceMinTransmittance,
+                                    const FootprintPointWeights* point_weights = nullptr);
 // The same, leaving out strand `skip_strand` only (kNoStrand: none).
 Vec3f trace_footprint_transmittance(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
                                     RayCounters& counters, RayScratch& scratch, uint32_t skip_strand);

@@ -7,12 +7,16 @@
 #include "core/geometry/surfaces/surface_set.h"
 #include "core/math/vec.h"
 
+#include <array>
 #include <cstdint>
 
 namespace darc {
 
 // The depth of a plane along the footprint's sub-rays, to first order about the footprint's
 // centre: t(u, v) = t0 + du u + dv v. Not `valid` where the plane is seen edge-on.
+// A weight per footprint point (8 x 8, the mask's order).
+using FootprintPointWeights = std::array<float, kMaskSide * kMaskSide>;
+
 struct DepthPlane {
   float t0 = 0, du = 0, dv = 0;
   bool valid = false;

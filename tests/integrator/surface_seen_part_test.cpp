@@ -75,6 +75,40 @@ TEST(SurfaceSeenPart, ABoxOnAFloorIsShadedWhereItAndTheFloorAreSeen) {
   EXPECT_LT(compare(distance, reference, kRgba).rmse, 0.0035) << "the whole image";
 }
 
+// A floor seen through a comb of black strands (a quarter pixel wide every half pixel: half of
+// each footprint), lit by a distant light from behind the camera (orthographic): the strands'
+// shadows lie exactly under them, so every part of the floor the camera sees is lit. A floor
+// shaded with the shadow of its seen part's bounding box (the whole footprint) took the
+// shadows under the strands as its own: 0.25 where the stochastic hider sees 0.5.
+std::string floor_through_a_comb(int samples) {
+  std::string strands;
+  for (int i = 0; i < 32; ++i) {
+    const double x = -1 + 0.0625 * i + 0.03125;
+    strands += "Curves \"linear\" [2] \"nonperiodic\" \"P\" [" + std::to_string(x) + " -1.5 4  " + std::to_string(x) +
+               " 1.5 4] \"constantwidth\" [0.03125]\n";
+  }
+  return "Format 16 16 1\nPixelFilter \"box\" 1 1\nPixelSamples " + std::to_string(samples) + " " +
+         std::to_string(samples) + R"RIB(
+Projection "orthographic"
+ScreenWindow -1 1 -1 1
+WorldBegin
+LightSource "distantlight" 1 "from" [0 0 0] "to" [0 0 1] "intensity" 1 "string shadowname" "raytrace"
+Surface "matte"
+Polygon "P" [-2 -2 5  2 -2 5  2 2 5  -2 2 5]
+AttributeBegin
+  Color 0 0 0
+)RIB" + strands + "AttributeEnd\nWorldEnd\n";
+}
+
+TEST(SurfaceSeenPart, AFloorSeenBetweenStrandsIsLitWhereItIsSeen) {
+  const Image reference = render_image(floor_through_a_comb(8), HiderKind::Stochastic);
+  const Image distance = render_image(floor_through_a_comb(1), HiderKind::Distance);
+  const double seen = channel_mean(reference, test::kRgb);
+  ASSERT_NEAR(seen, 0.5, 0.05) << "half of the floor is seen, all of it lit";
+  EXPECT_NEAR(channel_mean(distance, test::kRgb), seen, 0.03);
+  EXPECT_NEAR(channel_mean(distance, test::kAlpha), 1.0, 1e-3);
+}
+
 // The half-space a shadow ray's sub-rays stay in: they start on the receiver's tangent plane
 // (spanned by dox and doy) and leave it toward the light.
 TEST(StartHalfSpace, HoldsWhatTheSubRaysCanMeet) {
