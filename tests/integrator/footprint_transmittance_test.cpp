@@ -32,21 +32,26 @@ std::string strand(float y, float z, float width, float opacity) {
   return s.str();
 }
 
-// The transmittance seen along +z from (0, 0, -1) with a 1 x 1 footprint (orthographic).
-Vec3f transmittance(const Scene& scene, uint32_t skip_strand = kNoStrand, DistanceHiderSettings settings = {},
-                    Vec3f origin = {0, 0, -1}) {
+// The transmittance of footprint fp along ray.
+Vec3f transmittance_along(const Scene& scene, const Ray& ray, const RayFootprint& fp, uint32_t skip_strand = kNoStrand,
+                          DistanceHiderSettings settings = {}) {
   Diagnostics diag([](const Diagnostic&) {});
   SceneShading shading(scene, diag);
   Tracer tracer(scene);
   HiderContext base{scene, shading, tracer, 0, 1, 1};
   DistanceContext ctx = make_distance_context(base, settings);
-  RayFootprint fp;
-  fp.dox = Vec3f{1, 0, 0};
-  fp.doy = Vec3f{0, 1, 0};
-  Ray ray{origin, {0, 0, 1}};
   RayCounters counters;
   RayScratchStack scratch(scene.accel);
   return trace_footprint_transmittance(ctx, ray, fp, counters, scratch.at(0), skip_strand);
+}
+
+// The transmittance seen along +z from (0, 0, -1) with a 1 x 1 footprint (orthographic).
+Vec3f transmittance(const Scene& scene, uint32_t skip_strand = kNoStrand, DistanceHiderSettings settings = {},
+                    Vec3f origin = {0, 0, -1}) {
+  RayFootprint fp;
+  fp.dox = Vec3f{1, 0, 0};
+  fp.doy = Vec3f{0, 1, 0};
+  return transmittance_along(scene, Ray{origin, {0, 0, 1}}, fp, skip_strand, settings);
 }
 
 // A shadow ray's receiving patch leans along the ray (a strand's band runs along the strand,
@@ -57,20 +62,11 @@ Vec3f leaning_patch_transmittance(float x_a, float z_a, float width) {
   std::ostringstream s;
   s << "Curves \"linear\" [2] \"nonperiodic\" \"P\" [" << x_a << " -3 " << z_a << "  " << x_a << " 3 " << z_a
     << "] \"constantwidth\" [" << width << "]\n";
-  const Scene scene = build_scene(s.str());
-  Diagnostics diag([](const Diagnostic&) {});
-  SceneShading shading(scene, diag);
-  Tracer tracer(scene);
-  HiderContext base{scene, shading, tracer, 0, 1, 1};
-  DistanceContext ctx = make_distance_context(base, {});
   RayFootprint fp;
   fp.dox = Vec3f{1, 0, 0.8f};
   fp.doy = Vec3f{0, 1, 0};
   fp.form = FootprintForm::Parallel;
-  Ray ray{{0, 0, 0}, {0, 0, 1}};
-  RayCounters counters;
-  RayScratchStack scratch(scene.accel);
-  return trace_footprint_transmittance(ctx, ray, fp, counters, scratch.at(0), kNoStrand);
+  return transmittance_along(build_scene(s.str()), Ray{{0, 0, 0}, {0, 0, 1}}, fp);
 }
 
 TEST(FootprintTransmittance, ALeaningPatchsNearSideMeetsAStrandBehindItsCentre) {
