@@ -1,6 +1,7 @@
 #include "core/geometry/curves/curve_distance_intersector.h"
 
 #include "core/footprint/polygon_coverage.h"
+#include "core/footprint/start_cut.h"
 #include "core/geometry/curves/curve_intersector.h"
 
 #include <algorithm>
@@ -66,23 +67,8 @@ struct DistanceState {
   // (the start patch leans along the ray): only the sub-rays that start before a strand meet it.
   float start_du = 0, start_dv = 0;
   float start_depth_max = 0;  // the farthest origin's depth
-  // The sub-rays (u, v) with u cu + v cv < z0 start before the strand where they cross it.
-  struct StartCut {
-    float cu = 0, cv = 0, z0 = 1;
-    float share() const { return trapezoid_cdf(z0, std::abs(cu), std::abs(cv)); }
-    CoverageMask mask() const {
-      CoverageMask m = 0;
-      const float step = 1.0f / kMaskSide;
-      for (int j = 0; j < kMaskSide; ++j)
-        for (int i = 0; i < kMaskSide; ++i) {
-          const float u = (float(i) + 0.5f) * step - 0.5f, v = (float(j) + 0.5f) * step - 0.5f;
-          if (u * cu + v * cv < z0) m |= CoverageMask{1} << (j * kMaskSide + i);
-        }
-      return m;
-    }
-  };
   bool best_cut = false;  // whether the best leaf is cut (cut below)
-  StartCut cut;
+  StartCut cut;  // the sub-rays that start before the best leaf where they cross it
   CoverageMask cut_points = 0;  // the best leaf's band points that are cut (none: a band too thin)
   const RayFootprint* footprint;
   Vec3f frame_x, frame_y;  // the ray frame, its x axis along the segment's projected chord
@@ -305,7 +291,7 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
     ty = 0.0f;
   }
   float coverage = end_on ? end_on_coverage(s, f, pc.x, pc.y, half_width) : band_coverage(s, f, d, half_width, tx, ty);
-  DistanceState::StartCut cut;
+  StartCut cut;
   CoverageMask cut_points = 0;
   float started = 1.0f;
   // Each sub-ray starts t_min past its origin.
