@@ -21,6 +21,16 @@ T bezier(const T* c, float u) {
 // surface seen at under 7 degrees): at the silhouette the exact stretch has no bound, and
 // reflected and refracted footprints would inherit it.
 constexpr float kMaxGrazingStretch = 8.0f;
+// A strand's patch (the band its shadow rays leave) is at most this many times as long as it is
+// wide. A shadow ray meets every strand that crosses its band, and a band as long as a thumbnail's
+// footprint and as thin as a strand 1/20 of it meets hundreds (hair on a head at 32x24: 408
+// segment tests per shadow ray); the shadow averaged over 8 widths of the strand around where it
+// is seen is as good an estimate of the strand's shadow in the pixel (the pixel averages many
+// strands). Measured one run, 1 thread, distance 1x1 against stochastic 16x16, the 320x240 scenes
+// rendered smaller (--res): hair on a head at 32x24 segment tests -45 %, RMSE 0.0205 -> 0.0208;
+// hair-shadow at 32x24 -41 %, RMSE 0.0123 -> 0.0089; at 320x240 -2 to -4 % and RMSE within 0.2 %.
+// An aspect of 4 saved more (-65 % at 32x24) but cost 7 % RMSE on hair-shadow at 80x60.
+constexpr float kMaxStrandPatchAspect = 8.0f;
 
 // The stretch a texture lookup's footprint may have: beyond it the surface is seen within a
 // tenth of a degree of edge-on.
@@ -137,6 +147,8 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
     // is this strand is the band along the tangent, as long as the footprint and as wide as the
     // strand, centred on its axis. Rays leaving the strand (shadow rays above all) start there, so
     // that neighbours beside it in the same footprint do not shade it as if they were in front.
+    // The band is at most kMaxStrandPatchAspect times as long as it is wide (around where the
+    // strand is seen).
     const Vec3f ax = transfer(footprint->axis_x(t), ray.d, plane_normal);
     const Vec3f ay = transfer(footprint->axis_y(t), ray.d, plane_normal);
     const float side = std::sqrt(length(cross(ax, ay)));
@@ -153,7 +165,7 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
                                                                               : std::max(0.0f, 0.5f * (width - band));
     const float offset = std::clamp(dot(it.P - axis_point, across), -room, room);
     it.P = axis_point + across * offset;
-    it.dPdx = it.dPdv * side;
+    it.dPdx = it.dPdv * std::min(side, kMaxStrandPatchAspect * band);
     it.dPdy = across * band;
     if (length_squared(across) == 0.0f) {  // seen along its tangent: the footprint as it is
       it.dPdx = ax;
