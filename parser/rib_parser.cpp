@@ -15,6 +15,7 @@
 #include "parser/lexer.h"
 #include "parser/request_table.h"
 #include "parser/search_path.h"
+#include "parser/zip_member.h"
 
 namespace darc {
 
@@ -33,11 +34,11 @@ constexpr size_t kMaxArchiveDepth = 64;
 constexpr std::uint64_t kMaxInlineReplays = 250'000;
 constexpr std::uint64_t kMaxInlineReplayedBytes = std::uint64_t(1) << 30;
 
-// PRMan's "archive.zip!member.rib": a member of a zip file.
-bool is_zip_member(const std::string& name) {
-  std::string lower(name);
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return lower.find(".zip!") != std::string::npos;
+// The file an archive's location lies in: the zip file of "dir/cache.zip!member.rib", else the
+// location itself.
+std::string archive_file(const std::string& location) {
+  const std::optional<ZipMemberName> zip = split_zip_member(location);
+  return zip ? zip->zip : location;
 }
 
 std::string canonical_name(const std::string& path) {
@@ -321,7 +322,7 @@ std::string RibParser::resolve_archive(const std::string& name) const {
   const fs::path given(name);
   if (given.is_absolute()) return name;
   if (!include_stack_.empty()) {
-    const fs::path beside = fs::path(include_stack_.back()).parent_path() / given;
+    const fs::path beside = fs::path(archive_file(include_stack_.back())).parent_path() / given;
     if (is_readable_file(beside)) return beside.string();
   }
   for (const std::string& dir : archive_path_) {
@@ -339,14 +340,15 @@ void RibParser::read_archive(RequestReader& args, const SourceLoc& loc) {
 
 void RibParser::include_archive(const std::string& name, const SourceLoc& loc) {
   if (const InlineArchive* archive = inline_archives_.find(name)) return replay_inline_archive(name, *archive);
-  if (is_zip_member(name))
-    throw RibSyntaxError(loc, fmt::format("cannot read archive \"{}\": zip archive members are not supported", name));
   if (!archive_files_allowed_)
     throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\": file access is disabled", name));
-  const std::string path = resolve_archive(name);
+  // A member of a zip file (RenderMan for Maya's caches): the zip is found as a file archive is,
+  // and the member read from it (parser/zip_member.h). Its location is "zip path!member".
+  const std::optional<ZipMemberName> zip = split_zip_member(name);
+  const std::string path = zip ? resolve_archive(zip->zip) + "!" + zip->member : resolve_archive(name);
   std::error_code ec;
-  if (!fs::exists(path, ec))
-    throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\": no such file", name));
+  if (!fs::exists(archive_file(path), ec))
+    throw RibSyntaxError(loc, fmt::format("cannot open archive \"{}\": no such {}", name, zip ? "zip file" : "file"));
   const std::string canonical = canonical_name(path);
   if (std::find(include_stack_.begin(), include_stack_.end(), canonical) != include_stack_.end()) {
     throw RibSyntaxError(loc, fmt::format("archive \"{}\" includes itself (cycle through {})", name, canonical));
@@ -365,7 +367,8 @@ std::string RibParser::read_archive_text(const std::string& name, const std::str
   limits.regular_files_only = true;
   std::string text;
   std::string reason;
-  if (!read_rib_text(path, text, reason, limits))
+  const std::optional<ZipMemberName> zip = split_zip_member(path);
+  if (zip ? !read_zip_member(zip->zip, zip->member, text, reason, limits) : !read_rib_text(path, text, reason, limits))
     throw RibError(fmt::format("cannot open archive \"{}\": {}", name, reason));
   // A file that is not RIB (a password file, a key, a shell profile) would come out a token at
   // a time in "unknown request" messages: it is refused whole, and nothing of it is quoted.
@@ -383,7 +386,7 @@ void RibParser::include_cached_archive(const std::string& name, const std::strin
   if (archive) {
     archive_cache_->count_replay();
   } else {
-    const std::optional<FileStamp> stamp = stamp_file(path);
+    const std::optional<FileStamp> stamp = stamp_file(archive_file(path));
     std::string text = read_archive_text(name, path);
     std::optional<RecordedArchive> recorded = record_archive(text, path);
     if (!recorded) {
@@ -400,7 +403,7 @@ void RibParser::include_cached_archive(const std::string& name, const std::strin
 
 std::optional<RecordedArchive> RibParser::record_archive(std::string text, const std::string& path) {
   RecordedArchive archive;
-  if (std::optional<FileStamp> stamp = stamp_file(path)) archive.files.push_back(*stamp);
+  if (std::optional<FileStamp> stamp = stamp_file(archive_file(path))) archive.files.push_back(*stamp);
   archive.declarations_before = declared_;
   archive.search_path_before = archive_path_;
   int64_t errors_kept = 0;
