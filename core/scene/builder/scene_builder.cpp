@@ -142,6 +142,7 @@ void SceneBuilder::start_scene(const SourceLoc& loc) {
   camera_to_world_ = cam.camera_to_world;
 
   named_spaces_.clear();
+  scoped_spaces_.clear();
   named_spaces_["world"] = Matrix4{};
   named_spaces_["camera"] = camera_to_world_;
   light_handles_.clear();
@@ -218,9 +219,14 @@ void SceneBuilder::attribute_end(const SourceLoc& loc) {
   pop_block(Block::Attribute, "AttributeEnd", loc);
   attributes_ = saved_attributes_.back();
   saved_attributes_.pop_back();
+  while (!scoped_spaces_.empty() && scoped_spaces_.back().depth > saved_attributes_.size()) scoped_spaces_.pop_back();
   ctm_ = saved_ctm_.back();
   saved_ctm_.pop_back();
 }
+
+// Resource blocks scope Resource requests, which darc does not support: nothing to do.
+void SceneBuilder::resource_begin(const SourceLoc&) {}
+void SceneBuilder::resource_end(const SourceLoc&) {}
 
 void SceneBuilder::transform_begin(const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.transform_begin(loc); })) return;
@@ -301,10 +307,24 @@ void SceneBuilder::coordinate_system(const std::string& name, const SourceLoc& l
   named_spaces_[name] = ctm_;
 }
 
+void SceneBuilder::scoped_coordinate_system(const std::string& name, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.scoped_coordinate_system(name, loc); })) return;
+  if (!in_world_) {
+    diag_.warning(loc, "ScopedCoordinateSystem", "named spaces before WorldBegin are not supported: ignored");
+    return;
+  }
+  // Named until the attribute block it is given in ends (attribute_end drops it), over a space
+  // of the same name given outside.
+  scoped_spaces_.push_back({name, ctm_, saved_attributes_.size()});
+}
+
 void SceneBuilder::coord_sys_transform(const std::string& name, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.coord_sys_transform(name, loc); })) return;
+  if (!in_world_) throw RibError("unknown coordinate system \"" + name + "\"");
+  for (auto scoped = scoped_spaces_.rbegin(); scoped != scoped_spaces_.rend(); ++scoped)
+    if (scoped->name == name) return set_ctm(scoped->to_world);
   auto it = named_spaces_.find(name);
-  if (!in_world_ || it == named_spaces_.end()) throw RibError("unknown coordinate system \"" + name + "\"");
+  if (it == named_spaces_.end()) throw RibError("unknown coordinate system \"" + name + "\"");
   set_ctm(it->second);
 }
 

@@ -247,6 +247,14 @@ class SceneBuilder : public RiTarget {
   std::map<MaterialKey, uint32_t> material_ids_;  // this frame's materials
   Matrix4 camera_to_world_;
   std::map<std::string, Matrix4> named_spaces_;  // CoordinateSystem, relative to world
+  // ScopedCoordinateSystem: named until the end of the attribute block at `depth` (the number of
+  // saved attribute states when it was given); the latest of a name first.
+  struct ScopedSpace {
+    std::string name;
+    Matrix4 to_world;
+    size_t depth;
+  };
+  std::vector<ScopedSpace> scoped_spaces_;
   std::map<std::string, uint32_t> light_handles_;
   // AreaLightSource handles, and those of RIS Lights darc does not know: valid for Illuminate,
   // though they light nothing in darc.
