@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/scene/builder/shader_parameter_checks.h"
 #include "shading/area_lights.h"
@@ -46,16 +47,40 @@ class AmbientLight : public Light {
   Vec3f c_;
 };
 
+// A distant light, with an angular diameter (distantlight's "angle", degrees; PxrDistantLight's
+// angleExtent: the sun's is 0.53) or none. With one it is sampled: directions uniform in the cone
+// it subtends, each carrying the light's whole irradiance (the caller averages), so that a surface
+// facing it gets what the delta light gives and shadows soften over the cone, as RenderMan's.
 class DistantLight : public Light {
  public:
-  DistantLight(Vec3f c, Vec3f dir) : c_(c), to_light_(-normalize(dir)) {}
+  DistantLight(Vec3f c, Vec3f dir, float angle_degrees, int samples)
+      : c_(c), to_light_(-normalize(dir)), samples_(samples) {
+    const float half = 0.5f * std::clamp(angle_degrees, 0.0f, 90.0f) * std::numbers::pi_v<float> / 180.0f;
+    const float s = std::sin(half);
+    one_minus_cos_max_ = s * s / (1 + std::cos(half));  // 1 - cos, precise for small angles
+  }
   bool illuminate(const Vec3f&, LightContribution& out, float) const override {
     out = {c_, to_light_, false, std::numeric_limits<float>::infinity()};
     return length_squared(to_light_) > 0;
   }
+  int samples() const override { return one_minus_cos_max_ > 0 && length_squared(to_light_) > 0 ? samples_ : 0; }
+  bool sample(const Vec3f&, float u0, float u1, LightContribution& out) const override {
+    const Vec3f& w = to_light_;
+    const float one_minus_cos = u0 * one_minus_cos_max_;
+    const float cos_t = 1 - one_minus_cos;
+    const float sin_t = std::sqrt(std::max(0.0f, one_minus_cos * (2 - one_minus_cos)));
+    const float phi = 2 * std::numbers::pi_v<float> * u1;
+    const Vec3f a = normalize(std::abs(w.x) < 0.9f ? cross(w, Vec3f{1, 0, 0}) : cross(w, Vec3f{0, 1, 0}));
+    const Vec3f b = cross(w, a);
+    const Vec3f L = normalize(w * cos_t + a * (sin_t * std::cos(phi)) + b * (sin_t * std::sin(phi)));
+    out = {c_, L, false, std::numeric_limits<float>::infinity()};
+    return true;
+  }
 
  private:
   Vec3f c_, to_light_;
+  int samples_;
+  float one_minus_cos_max_ = 0;
 };
 
 class PointLight : public Light {
@@ -169,7 +194,9 @@ std::vector<std::unique_ptr<Light>> make_lights(const std::vector<LightDesc>& de
     if (kind == "ambientlight") {
       lights.push_back(std::make_unique<AmbientLight>(c));
     } else if (kind == "distantlight") {
-      lights.push_back(std::make_unique<DistantLight>(c, to_w - from_w));
+      const int samples = int(p.get_float("nsamples", float(kDefaultAreaLightSamples)));
+      lights.push_back(
+          std::make_unique<DistantLight>(c, to_w - from_w, p.get_float("angle", 0), std::clamp(samples, 1, 4096)));
     } else if (kind == "pointlight") {
       lights.push_back(std::make_unique<PointLight>(c, from_w));
     } else {

@@ -33,7 +33,7 @@ double mean_red(const Pixels& p) {
 TEST(RisRender, PxrSurfaceUnderPxrDistantLightLooksLikeItsPlasticAndDistantlight) {
   ScratchDir dir("ris-render");
   // intensity 1.5 * 2^1 = 3; the light travels along its +z axis (RenderMan's Pxr lights emit
-  // toward their own +z: ../shared/docs/lookdev.md §2.2).
+  // toward their own +z: ../shared/docs/lookdev.md §2.2), 0.53 degrees across (angleExtent's default).
   write_file(dir / "ris.rib",
              frame("ris.exr",
                    "Light \"PxrDistantLight\" \"sun\" \"float intensity\" [1.5] \"float exposure\" [1] "
@@ -42,7 +42,8 @@ TEST(RisRender, PxrSurfaceUnderPxrDistantLightLooksLikeItsPlasticAndDistantlight
                    "\"color specularFaceColor\" [0.4 0.4 0.4] \"float specularRoughness\" [0.1]"));
   write_file(dir / "ri.rib", frame("ri.exr",
                                    "LightSource \"distantlight\" 1 \"intensity\" [3] \"lightcolor\" [1 0.9 0.8] "
-                                   "\"from\" [0 0 0] \"to\" [0 0 1] \"string shadowname\" [\"raytrace\"]",
+                                   "\"from\" [0 0 0] \"to\" [0 0 1] \"float angle\" [0.53] "
+                                   "\"string shadowname\" [\"raytrace\"]",
                                    "Color [0.8 0.3 0.2]\n    Surface \"plastic\" \"Ka\" [0.6] \"Kd\" [0.6] \"Ks\" [1] "
                                    "\"roughness\" [0.1] \"specularcolor\" [0.4 0.4 0.4]"));
   for (const char* hider : {"distance", "stochastic"}) {

@@ -21,6 +21,7 @@ enum class Range {
   Eta,             // > 0: an index of refraction
   ConeAngle,       // [0, pi] radians
   ConeDeltaAngle,  // [0, coneangle] radians
+  SunAngle,        // [0, 90] degrees: the angular diameter of a distant light
   Triple,          // a colour or a point: 3 finite numbers
 };
 
@@ -57,8 +58,11 @@ constexpr ParameterRule kChiangHair[] = {{"Ka", Range::NonNegative},        {"si
                                          {"coneangle", Range::Any}};
 // Also the parameters every AreaLightSource is drawn with, whatever its shader.
 constexpr ParameterRule kAmbientLight[] = {{"intensity", Range::Any}, {"lightcolor", Range::Triple}};
-constexpr ParameterRule kDistantLight[] = {
-    {"intensity", Range::Any}, {"lightcolor", Range::Triple}, {"from", Range::Triple}, {"to", Range::Triple}};
+constexpr ParameterRule kDistantLight[] = {{"intensity", Range::Any},
+                                           {"lightcolor", Range::Triple},
+                                           {"from", Range::Triple},
+                                           {"to", Range::Triple},
+                                           {"angle", Range::SunAngle}};
 constexpr ParameterRule kPointLight[] = {
     {"intensity", Range::Any}, {"lightcolor", Range::Triple}, {"from", Range::Triple}};
 // coneangle before conedeltaangle: the delta is checked against the (clamped) cone.
@@ -142,6 +146,10 @@ class Clamper {
       case Range::ConeDeltaAngle:
         if (v < 0) warn(p, given, v = 0, "is negative", " (a hard cone edge)");
         if (v > cone_angle) warn(p, given, v = cone_angle, "is wider than the cone angle");
+        break;
+      case Range::SunAngle:
+        if (v < 0) warn(p, given, v = 0, "is negative", " (hard shadows)");
+        if (v > 90) warn(p, given, v = 90, "is more than 90 degrees");
         break;
       case Range::Any:
       case Range::Triple:

@@ -59,6 +59,8 @@ RisLightMapping map_ris_light(const std::string& name, const ParamList& params, 
     // Along the light's +z, as RenderMan's own bridges place it (lookdev.md §2.2).
     m.shader = "distantlight";
     extra = {triple_param("from", ParamType::Point, {0, 0, 0}), triple_param("to", ParamType::Point, {0, 0, 1})};
+    // Its angular diameter in degrees (RenderMan's default, 0.53, is the sun's): soft shadows.
+    extra.push_back(number_param("angle", r.number("angleExtent", kDefaultSunAngleDegrees)));
   } else if (name == "PxrDomeLight") {
     // Its radiance from every direction (times its lat-long lightColorMap), sampled with shadows.
     m.shader = "domelight";
@@ -89,7 +91,7 @@ RisLightMapping map_ris_light(const std::string& name, const ParamList& params, 
   }
   m.params.params = {number_param("intensity", intensity), triple_param("lightcolor", ParamType::Color, color)};
   // RenderMan's per-light sample count; 0 (its default) leaves the count to the renderer.
-  if (const float fixed = r.number("fixedSampleCount", 0); fixed > 0 && m.shader != "distantlight")
+  if (const float fixed = r.number("fixedSampleCount", 0); fixed > 0)
     m.params.params.push_back(number_param("nsamples", fixed));
   m.params.params.insert(m.params.params.end(), extra.begin(), extra.end());
   m.dropped = r.unread();

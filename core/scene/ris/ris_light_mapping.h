@@ -1,6 +1,7 @@
 // RenderMan 21+ Light requests mapped to darc's light shaders (shading/lights.h). A RIS light's
 // colour is intensity * 2^exposure * lightColor. PxrDistantLight -> distantlight along the
-// light's +z axis (the side RenderMan's Pxr lights emit to: ../shared/docs/lookdev.md §2.2).
+// light's +z axis (the side RenderMan's Pxr lights emit to: ../shared/docs/lookdev.md §2.2),
+// its angleExtent as distantlight's "angle" (sampled over that cone: soft shadows).
 // PxrRectLight, PxrDiskLight and PxrSphereLight -> darc's area lights rectlight, disklight and
 // spherelight (the same unit shapes, emitting toward +z where flat; shading/area_lights.h),
 // sampled with soft shadows; their shapes are not drawn. PxrDomeLight -> domelight (radiance from
@@ -15,6 +16,9 @@
 #include "parser/param_list.h"
 
 namespace darc {
+
+// PxrDistantLight's default angleExtent (degrees): the sun's angular diameter, as RenderMan's.
+inline constexpr float kDefaultSunAngleDegrees = 0.53f;
 
 struct RisLightMapping {
   std::string shader;                // a darc light shader; empty: no light (an unknown RIS light)

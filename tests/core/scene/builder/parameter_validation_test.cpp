@@ -272,6 +272,12 @@ std::vector<Row> shader_rows() {
       {"light-beam", in_world("LightSource \"spotlight\" 1 \"beamdistribution\" [-1]"),
        warning(2, "LightSource", "\"spotlight\" \"beamdistribution\" -1 is negative: clamped to 0"),
        [light](const Scene& s) { EXPECT_EQ(param(light(s), "beamdistribution"), 0); }},
+      {"light-angle-negative", in_world("LightSource \"distantlight\" 1 \"float angle\" [-2]"),
+       warning(2, "LightSource", "\"distantlight\" \"angle\" -2 is negative: clamped to 0 (hard shadows)"),
+       [light](const Scene& s) { EXPECT_EQ(param(light(s), "angle"), 0); }},
+      {"light-angle-wide", in_world("LightSource \"shadowdistant\" 1 \"float angle\" [120]"),
+       warning(2, "LightSource", "\"shadowdistant\" \"angle\" 120 is more than 90 degrees: clamped to 90"),
+       [light](const Scene& s) { EXPECT_EQ(param(light(s), "angle"), 90); }},
       {"light-direction", in_world("LightSource \"distantlight\" 1 \"from\" [1 2 3] \"to\" [1 2 3]"),
        warning(
            2, "LightSource",
