@@ -81,27 +81,44 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
   // it casts shadows. An area light's samples are pruned (and stop) by the light's whole
   // contribution as each estimates it, not by their share of it: many samples of a light that
   // matters are each small, and pruning them one by one took the whole light as unoccluded.
-  auto add_light = [&](const Light& light, const LightContribution& lc, float share) {
+  // `cone` > 0: the light is a small disc at infinity seen along lc.L, and its shadow is the mean
+  // over that cone, in one ray when the tracer can (else the light is sampled: false).
+  auto add_light = [&](const Light& light, const LightContribution& lc, float share, float cone = 0.0f) {
     const Vec3f whole = shader.response(sp, lobes, lc);
     const Vec3f unoccluded = whole * share;
     if (!light.casts_shadows() || max_component(unoccluded) <= 0) {
       c += unoccluded;
-      return;
+      return true;
     }
     const float shadow_weight = pruning ? weight.get() * max_component(mul(lobes.Oi, whole)) : 1.0f;
     if (pruning && !worth_tracing(shadow_weight, settings)) {
       counters.count_pruned(SecondaryKind::Shadow);
       c += unoccluded;  // pruned: the light taken as unoccluded
-      return;
+      return true;
+    }
+    if (cone > 0) {
+      Vec3f transmittance;
+      if (!tracer.cone_shadow_transmittance(at, lc.L, cone, footprint, PathState{depth, shadow_weight}, transmittance))
+        return false;
+      counters.count_traced(SecondaryKind::Shadow);
+      c += mul(unoccluded, transmittance);
+      return true;
     }
     counters.count_traced(SecondaryKind::Shadow);
     c += mul(unoccluded, tracer.shadow_transmittance(at, lc.L, lc.distance, footprint, PathState{depth, shadow_weight}));
+    return true;
   };
   uint32_t light_index = 0;
   for (const Light* light : shading.lights(at.material)) {
     ++light_index;
     if (const int n = light->samples(); n > 0) {
       if (!lobes.lit) continue;
+      // A small sun with a footprint: its direction alone (within kMaxConeShadowHalfAngle the
+      // response barely changes over the cone) and one shadow ray widened by the cone.
+      if (const float cone = light->cone_half_angle();
+          cone > 0 && cone <= kMaxConeShadowHalfAngle && footprint && light->illuminate(sp.P, lc, footprint_radius) &&
+          add_light(*light, lc, 1.0f, cone))
+        continue;
       // A grid of strata over the light's parameters, rotated by an amount drawn from the point
       // and the light (Cranley-Patterson): neighbouring points see different points of the light,
       // so the light's shape does not print as a pattern of copies, and the result depends on

@@ -44,6 +44,11 @@ class LazyWeight {
   mutable bool known_ = false;
 };
 
+// The widest sun (half-angle, radians: 5 degrees) traced as one cone shadow ray. Within it the
+// response's cosine changes by under 0.4 % over the cone and the cone's tangent-plane square of
+// directions measures its solid angle to 0.8 %; wider lights are sampled.
+inline constexpr float kMaxConeShadowHalfAngle = 5.0f * 3.14159265f / 180.0f;
+
 class SecondaryRayTracer {
  public:
   virtual ~SecondaryRayTracer() = default;
@@ -52,6 +57,14 @@ class SecondaryRayTracer {
   // the shadow ray's own weight (what its transmittance multiplies).
   virtual Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance,
                                      const RayFootprint* footprint, const PathState& path) = 0;
+  // The mean transmittance toward a light at infinity over the cone of directions of half-angle
+  // `half_angle` around unit direction l, in one shadow ray whose footprint widens with the cone;
+  // false when this tracer cannot (exact rays: the light's samples are traced instead).
+  virtual bool cone_shadow_transmittance(const Interaction& /*at*/, const Vec3f& /*l*/, float /*half_angle*/,
+                                         const RayFootprint* /*footprint*/, const PathState& /*path*/,
+                                         Vec3f& /*transmittance*/) {
+    return false;
+  }
   // The colour seen along a reflected or refracted ray from `at` (with its footprint, or null for
   // exact rays); `next` is that ray's path state. `beyond`: the radiance the ray receives if it
   // leaves the scene (a dome's), seen through what the ray's coverage leaves uncovered.

@@ -56,6 +56,7 @@ class DistantLight : public Light {
   DistantLight(Vec3f c, Vec3f dir, float angle_degrees, int samples)
       : c_(c), to_light_(-normalize(dir)), samples_(samples) {
     const float half = 0.5f * std::clamp(angle_degrees, 0.0f, 90.0f) * std::numbers::pi_v<float> / 180.0f;
+    half_angle_ = length_squared(to_light_) > 0 ? half : 0.0f;
     const float s = std::sin(half);
     one_minus_cos_max_ = s * s / (1 + std::cos(half));  // 1 - cos, precise for small angles
   }
@@ -64,6 +65,7 @@ class DistantLight : public Light {
     return length_squared(to_light_) > 0;
   }
   int samples() const override { return one_minus_cos_max_ > 0 && length_squared(to_light_) > 0 ? samples_ : 0; }
+  float cone_half_angle() const override { return half_angle_; }
   bool sample(const Vec3f&, float u0, float u1, LightContribution& out) const override {
     const Vec3f& w = to_light_;
     const float one_minus_cos = u0 * one_minus_cos_max_;
@@ -80,6 +82,7 @@ class DistantLight : public Light {
  private:
   Vec3f c_, to_light_;
   int samples_;
+  float half_angle_ = 0;
   float one_minus_cos_max_ = 0;
 };
 

@@ -42,6 +42,10 @@ class Light {
   // The radiance a ray leaving the scene along unit direction d receives from this light (a
   // dome's, at infinity); black for lights that are not at infinity all around.
   virtual Vec3f environment(const Vec3f& /*d*/) const { return {}; }
+  // A light at infinity seen as a small disc (a sun): the half-angle of the cone it subtends, in
+  // radians (0: none). A tracer with footprints may trace one shadow ray whose footprint widens
+  // with that cone instead of samples() rays (SecondaryRayTracer::cone_shadow_transmittance).
+  virtual float cone_half_angle() const { return 0.0f; }
   // Whether occluders between P and the light are looked for (LightDesc::casts_shadows).
   bool casts_shadows() const { return casts_shadows_; }
   void set_casts_shadows(bool on) { casts_shadows_ = on; }
