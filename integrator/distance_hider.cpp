@@ -371,29 +371,6 @@ DistanceContext make_distance_context(const HiderContext& base, const DistanceHi
 
 namespace {
 
-// Widens a shadow footprint toward a light at infinity by the cone of half-angle `half` around
-// its unit direction l: sub-ray (u, v) leaves its patch point along l + u ddx + v ddy, a square of
-// directions of side sqrt(pi) tan(half) per unit distance (the area of the cone's disc), so that
-// the footprint's mean transmittance is the shadow averaged over the light's disc and the patch.
-// Each sub-ray pairs one patch point with one direction, where the average wants every pair: the
-// region the pairs sweep at distance t is the patch plus the cone's disc there, whose spread (a
-// sum of independent offsets) is sqrt(patch^2 + (t side)^2) across. The cone's axes are the
-// patch's turned by 90 degrees about l, so that |dox + t ddx| is exactly that and the footprint's
-// area patch^2 + (t side)^2 (paired along the patch's own axes it would be (patch + t side)^2 and
-// the occluders' share too small: a sphere inside the cone blocked 28 of 64 points for 33).
-void widen_by_cone(RayFootprint& f, const Vec3f& l, float half) {
-  const Vec3f px = f.dox - l * dot(f.dox, l), py = f.doy - l * dot(f.doy, l);
-  Vec3f a = length_squared(py) > 1e-30f ? py : length_squared(px) > 1e-30f ? cross(l, px) : Vec3f{};
-  if (!(length_squared(a) > 1e-30f)) a = std::abs(l.x) < 0.9f ? cross(l, Vec3f{1, 0, 0}) : cross(l, Vec3f{0, 1, 0});
-  a = normalize(a);
-  Vec3f b = cross(l, a);
-  if (dot(b, px) > 0) b = -b;  // a x b turns as dox x doy does: the areas add
-  const float side = std::sqrt(std::numbers::pi_v<float>) * std::tan(half);
-  f.ddx = f.ddx + a * side;
-  f.ddy = f.ddy + b * side;
-  f.form = FootprintForm::General;
-}
-
 // Secondary rays of the distance hider: footprint rays through the same walk and A-buffer.
 class FootprintSecondaryRays : public SecondaryRayTracer {
  public:

@@ -1,6 +1,7 @@
 #include "core/scene/ray_differentials.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace darc {
 
@@ -94,6 +95,19 @@ RayFootprint shadow_footprint(const Interaction& at, float distance, float min_r
     f.form = FootprintForm::Parallel;
   }
   return f;
+}
+
+void widen_by_cone(RayFootprint& f, const Vec3f& l, float half) {
+  const Vec3f px = f.dox - l * dot(f.dox, l), py = f.doy - l * dot(f.doy, l);
+  Vec3f a = length_squared(py) > 1e-30f ? py : length_squared(px) > 1e-30f ? cross(l, px) : Vec3f{};
+  if (!(length_squared(a) > 1e-30f)) a = std::abs(l.x) < 0.9f ? cross(l, Vec3f{1, 0, 0}) : cross(l, Vec3f{0, 1, 0});
+  a = normalize(a);
+  Vec3f b = cross(l, a);
+  if (dot(b, px) > 0) b = -b;  // a x b turns as dox x doy does: the areas add
+  const float side = std::sqrt(std::numbers::pi_v<float>) * std::tan(half);
+  f.ddx = f.ddx + a * side;
+  f.ddy = f.ddy + b * side;
+  f.form = FootprintForm::General;
 }
 
 }  // namespace darc
