@@ -60,6 +60,33 @@ DepthPlane depth_plane(const Ray& ray, const RayFootprint& footprint, const Vec3
 // (the stretch of a surface seen about 83 degrees from its normal; footprint-everything.md §2.5).
 constexpr float kShadowPatchElongation = 2;
 
+// Widens a camera ray's footprint by its lens (DepthOfField): one ray per pixel stratum then
+// stands for the whole lens. The sub-rays over the lens are a pencil through the focal point
+// (origin offsets along the lens axes, directions converging at focus_t); the footprint is the
+// pixel's parallelogram plus that disc. Both are kept linear in t, so every kernel that takes a
+// footprint works unchanged: the lens's axes, turned a quarter turn from the pixel's and
+// scaled to the disc's area (sqrt(pi) times its radius), are added to the pixel's. Their sum
+// spans, at every depth, a parallelogram of the pixel's area plus the circle of confusion's
+// (the cross terms vanish where the pixel's axes follow the lens's), its size never below the
+// pixel's, equal to it on the focal plane. Coverage within it is taken as uniform: a strand
+// defocused far beyond the pixel peaks at sqrt(pi)/2 = 0.886 of the thin lens's 4w/(pi c)
+// (docs/architecture.md, depth of field). The form is general: surfaces are met by sub-rays.
+void add_lens(const Camera::LensAxes& lens, RayFootprint& f) {
+  constexpr float kDiscToSquare = 1.7724538509055159f;  // sqrt(pi): a square of the disc's area
+  // Turned so that the lens's square has the pixel's orientation: the areas then add (turned
+  // the other way they would cancel).
+  const Vec3f pixel_normal = f.form == FootprintForm::Parallel ? cross(f.dox, f.doy) : cross(f.ddx, f.ddy);
+  const Vec3f ax = lens.y_axis * kDiscToSquare;
+  Vec3f ay = lens.x_axis * kDiscToSquare;
+  if (dot(cross(ax, ay), pixel_normal) < 0) ay = -ay;
+  f.dox += ax;
+  f.doy += ay;
+  f.ddx -= ax / lens.focus_t;
+  f.ddy -= ay / lens.focus_t;
+  f.form = FootprintForm::General;
+  f.waist_t = lens.focus_t;
+}
+
 RayFootprint camera_footprint(const Camera& cam, double x, double y, double spacing, const Ray& ray,
                               float min_radius) {
   Ray rx = cam.generate_ray(x + spacing, y), ry = cam.generate_ray(x, y + spacing);
@@ -77,6 +104,7 @@ RayFootprint camera_footprint(const Camera& cam, double x, double y, double spac
   } else if (f.ddx == Vec3f{} && f.ddy == Vec3f{}) {
     f.form = FootprintForm::Parallel;
   }
+  if (cam.has_lens()) add_lens(cam.lens_axes(x, y), f);
   return f;
 }
 

@@ -1,9 +1,12 @@
 #include "integrator/stochastic_hider.h"
 
+#include "core/math/concentric_disc.h"
 #include "integrator/sample_rng.h"
 
 #include <algorithm>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace darc {
 
@@ -16,6 +19,8 @@ constexpr float kMinTransmittance = 1e-3f;
 constexpr int kMaxLayers = 256;
 // Relative offset that moves a continued ray past the surface it just hit.
 constexpr float kContinueEpsilon = 1e-5f;
+// The SampleRng stream of a pixel's lens permutation: above every sample index (at most 64 x 64).
+constexpr uint32_t kLensPermutationStream = 0xFFFFFFFFu;
 // Secondary rays start this fraction of the scene's size away from their point.
 constexpr float kRayOffsetSceneFraction = 1e-6f;
 // A sphere a ray leaves is not hit again nearer than this fraction of the scene's size.
@@ -101,23 +106,54 @@ SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, Ray
   return out;
 }
 
+namespace {
+
+// The lens strata of one pixel's samples: sample i takes lens stratum strata[i], a permutation
+// keyed by the pixel (Fisher-Yates from its own generator), so that lens positions are
+// stratified over the disc and unrelated to the samples' image positions (what correlated
+// strata would turn into a pattern in the blur).
+void shuffle_lens_strata(uint32_t px, uint32_t py, uint32_t seed, std::vector<uint32_t>& strata) {
+  for (size_t i = 0; i < strata.size(); ++i) strata[i] = uint32_t(i);
+  SampleRng rng(px, py, kLensPermutationStream, seed);
+  for (size_t i = strata.size(); i > 1; --i) {
+    const size_t j = size_t(rng.next_u64() % i);
+    std::swap(strata[i - 1], strata[j]);
+  }
+}
+
+}  // namespace
+
 void render_tile_stochastic(const HiderContext& ctx, const PixelRect& rect, TileAccumulator& acc,
                             RayCounters& counters) {
   const int nx = ctx.samples_x, ny = ctx.samples_y;
+  const Camera& camera = ctx.scene.camera;
   RayScratchStack scratch(ctx.scene.accel);
+  std::vector<uint32_t> lens_strata(size_t(nx) * size_t(ny));
   for (int py = rect.y0; py < rect.y1; ++py)
-    for (int px = rect.x0; px < rect.x1; ++px)
+    for (int px = rect.x0; px < rect.x1; ++px) {
+      if (camera.has_lens()) shuffle_lens_strata(uint32_t(px), uint32_t(py), ctx.seed, lens_strata);
       for (int sy = 0; sy < ny; ++sy)
         for (int sx = 0; sx < nx; ++sx) {
           int index = sy * nx + sx;
           SampleRng rng(uint32_t(px), uint32_t(py), uint32_t(index), ctx.seed);
           float x = px + (sx + rng.next_float()) / nx;
           float y = py + (sy + rng.next_float()) / ny;
-          Ray ray = ctx.scene.camera.generate_ray(x, y);
+          Ray ray;
+          if (camera.has_lens()) {
+            // The lens stratum this sample takes, jittered, on the disc.
+            const uint32_t stratum = lens_strata[size_t(index)];
+            const float lu = (float(stratum % uint32_t(nx)) + rng.next_float()) / float(nx);
+            const float lv = (float(stratum / uint32_t(nx)) + rng.next_float()) / float(ny);
+            const Vec2f lens = concentric_disc(lu, lv);
+            ray = camera.generate_lens_ray(x, y, lens.x, lens.y);
+          } else {
+            ray = camera.generate_ray(x, y);
+          }
           ++counters.primary_rays;
           SampleValue v = trace_camera_ray(ctx, ray, counters, scratch);
           acc.add_sample(x, y, {v.color.x, v.color.y, v.color.z, v.alpha}, v.depth);
         }
+    }
 }
 
 }  // namespace darc

@@ -149,7 +149,6 @@ Table make_table() {
       {"DetailRange", ignored},
       {"GeometricApproximation", ignored},
       {"TextureCoordinates", ignored},
-      {"DepthOfField", ignored},
       {"MotionBegin", ignored},
       {"MotionEnd", ignored},
       {"ArchiveRecord", ignored},

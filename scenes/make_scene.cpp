@@ -1,7 +1,7 @@
 // Generates the demo and benchmark hair scenes as RIB text on standard output:
 //   darc_make_scene KIND SIZE [RES]
 // KIND: furball | hairball | grass | transparent-hair | scalp-hair | hairball-medium, for
-// the secondary rays hair-shadow | hair-mirror | hair-glass, and head-hair | grass-terrain;
+// the secondary rays hair-shadow | hair-mirror | hair-glass, head-hair | grass-terrain, grass-dof;
 // SIZE: small | large | demo | 640.
 // SIZE 640 is the 640x480 benchmark (bench/speed_vs_error --size 640): every image is RES x
 // RES*3/4 (RES defaults to 640) and the first four kinds have about 30k cubic segments,
@@ -11,7 +11,7 @@
 // ball beside a flat mirror, hair-glass a curtain of hair behind a glass sphere.
 // The whole scenes (--size whole) put hair on the meshes it grows on, under shadowing lights:
 // head-hair the scalp's hair on a head mesh (4.6k faces), grass-terrain the grass on a displaced
-// terrain mesh (9.2k quads).
+// terrain mesh (9.2k quads). grass-dof is the grass seen through a lens (DepthOfField).
 // Everything is a deterministic function of the arguments (fixed-seed generator), so the
 // benchmark can regenerate a scene and compare it with a cached reference.
 #include <algorithm>
@@ -210,14 +210,19 @@ std::vector<std::vector<V3>> grass_blades(Rng& rng, int n, double (*ground)(doub
   return strands;
 }
 
-void grass(const std::string& size, int res) {
+// `lens`: DepthOfField for grass-dof, focused 6 units away (a third of the way into the field),
+// its circle of confusion about 12 pixels across at the nearest blades at SIZE 320, 5 at the
+// farthest.
+void grass(const std::string& size, int res, bool lens = false) {
   Rng rng(3);
   const double fov = 40;
   const int yres = res * 3 / 4;  // every size (SIZE 640 included) is 4:3
   // A low camera looking across the field: the nearest blades (about 2 units away) are 2 pixels
   // wide at the root, the far ones (40 units) a tenth of a pixel.
   const double px = pixel_size(2, fov, yres);
-  header(res, yres, fov, "Rotate -8 1 0 0\nTranslate 0 -0.6 0.5", "grass.exr");
+  header(res, yres, fov,
+         lens ? "DepthOfField 2 0.22 6\nRotate -8 1 0 0\nTranslate 0 -0.6 0.5" : "Rotate -8 1 0 0\nTranslate 0 -0.6 0.5",
+         lens ? "grass-dof.exr" : "grass.exr");
   std::printf("AttributeBegin\nColor [0.25 0.18 0.1]\nSurface \"matte\"\n");
   std::printf("Polygon \"P\" [-30 0 0  30 0 0  30 0 60  -30 0 60]\nAttributeEnd\n");
   std::printf("AttributeBegin\nColor [0.2 0.6 0.15]\nSurface \"plastic\" \"Ks\" [0.2]\n");
@@ -609,7 +614,7 @@ int main(int argc, char** argv) {
   if (argc < 3) {
     std::fprintf(stderr,
                  "usage: darc_make_scene furball|hairball|grass|transparent-hair|scalp-hair|hairball-medium|"
-                 "hair-shadow|hair-mirror|hair-glass|head-hair|grass-terrain small|large|demo|640 [RES]\n");
+                 "hair-shadow|hair-mirror|hair-glass|head-hair|grass-terrain|grass-dof small|large|demo|640 [RES]\n");
     return 2;
   }
   std::string kind = argv[1], size = argv[2];
@@ -626,6 +631,7 @@ int main(int argc, char** argv) {
   if (kind == "furball") furball(size, res);
   else if (kind == "hairball") hairball(size, res);
   else if (kind == "grass") grass(size, res);
+  else if (kind == "grass-dof") grass(size, res, true);
   else if (kind == "transparent-hair") transparent_hair(size, res);
   else if (kind == "scalp-hair") scalp_hair(size, res);
   else if (kind == "hairball-medium") hairball_medium(size, res);

@@ -1,5 +1,7 @@
 #include "shading/area_lights.h"
 
+#include "core/math/concentric_disc.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,17 +67,8 @@ class DiskLight : public FlatAreaLight {
  protected:
   // Shirley and Chiu's concentric map of the square onto the disc.
   Vec3f point(float u0, float u1) const override {
-    const float x = 2 * u0 - 1, y = 2 * u1 - 1;
-    if (x == 0 && y == 0) return centre_;
-    float r, theta;
-    if (std::abs(x) > std::abs(y)) {
-      r = x;
-      theta = kPi / 4 * (y / x);
-    } else {
-      r = y;
-      theta = kPi / 2 - kPi / 4 * (x / y);
-    }
-    return centre_ + a_ * (r * std::cos(theta)) + b_ * (r * std::sin(theta));
+    const Vec2f p = concentric_disc(u0, u1);
+    return centre_ + a_ * p.x + b_ * p.y;
   }
 
  private:

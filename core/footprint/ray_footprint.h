@@ -59,6 +59,9 @@ struct RayFootprint {
   float min_radius = 0;
   FootprintForm form = FootprintForm::General;
   float apex_t = 0;  // a pencil's apex, as a parameter along the ray
+  // General form: where along the ray the footprint is about smallest (a lens's focal plane),
+  // the apex of its reach bound; 0 (the origin) when nothing better is known.
+  float waist_t = 0;
 
   Vec3f axis_x(float t) const { return dox + ddx * t; }
   Vec3f axis_y(float t) const { return doy + ddy * t; }
@@ -66,14 +69,16 @@ struct RayFootprint {
     return length_squared(dox) + length_squared(doy) + length_squared(ddx) + length_squared(ddy) > 0;
   }
 
-  // The V around the apex: a pencil's; for the other forms the origin (a + b t for t >= 0, which
-  // never shrinks: a reflected footprint that converges is bounded loosely but safely). A
-  // least-squares apex for the general form was tried: for a ray whose directions barely change
-  // (glass of eta 1) it lies wherever rounding puts it, and the refinement depth it feeds
-  // changed the image by 3.5e-4 against the same strands seen directly.
+  // The V around the apex: a pencil's; for the general form its waist (the origin unless set:
+  // a + b t for t >= 0, which never shrinks, so a reflected footprint that converges is bounded
+  // loosely but safely); for the parallel form any point (b = 0). The reach changes by at most
+  // b per unit of t, so the V around any point bounds it. A least-squares apex for the general
+  // form was tried: for a ray whose directions barely change (glass of eta 1) it lies wherever
+  // rounding puts it, and the refinement depth it feeds changed the image by 3.5e-4 against the
+  // same strands seen directly; a lens's waist is set where it is known (its focal plane).
   ReachBound reach_bound() const {
     const float spread = 0.5f * (length(ddx) + length(ddy));
-    const float t_apex = form == FootprintForm::Pencil ? apex_t : 0.0f;
+    const float t_apex = form == FootprintForm::Pencil ? apex_t : form == FootprintForm::General ? waist_t : 0.0f;
     const float a = 0.5f * (length(dox + ddx * t_apex) + length(doy + ddy * t_apex));
     return {a, spread, t_apex};
   }
@@ -113,7 +118,7 @@ struct RayFootprint {
 // The footprint of a sub-ray family that meets at `apex_t` along the ray.
 inline RayFootprint pencil_footprint(const Vec3f& dox, const Vec3f& doy, const Vec3f& ddx, const Vec3f& ddy,
                                      float apex_t, float min_radius) {
-  RayFootprint f{dox, doy, ddx, ddy, min_radius, FootprintForm::Pencil, apex_t};
+  RayFootprint f{dox, doy, ddx, ddy, min_radius, FootprintForm::Pencil, apex_t, 0};
   return f;
 }
 

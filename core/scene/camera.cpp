@@ -52,6 +52,39 @@ Ray Camera::generate_ray(double rx, double ry) const {
   return w;
 }
 
+Ray Camera::generate_lens_ray(double rx, double ry, double lens_x, double lens_y) const {
+  if (!has_lens()) return generate_ray(rx, ry);
+  Ray c = camera_ray(rx, ry);
+  // The pinhole ray meets the focal plane z = focal_distance at F; the lens ray runs from the
+  // lens point to F (pbrt-v4's thin lens).
+  const Vec3d o(c.o), d(c.d);
+  const Vec3d focus = o + d * ((focal_distance - o.z) / d.z);
+  const Vec3d lens_o = o + Vec3d{lens_x * lens_radius, lens_y * lens_radius, 0};
+  const Vec3d dir = normalize(focus - lens_o);
+  Ray w;
+  w.o = Vec3f(camera_to_world.transform_point(lens_o));
+  Vec3d wd = camera_to_world.transform_vector(dir);
+  const double len = length(wd);
+  w.d = Vec3f(wd / len);
+  // Clipping planes are planes of constant camera z; t stays a world-space distance.
+  w.tmin = float(std::max(0.0, near_clip / dir.z) * len);
+  w.tmax = float(std::min(double(std::numeric_limits<float>::max()), far_clip / dir.z * len));
+  return w;
+}
+
+Camera::LensAxes Camera::lens_axes(double rx, double ry) const {
+  LensAxes axes;
+  if (!has_lens()) return axes;
+  Ray c = camera_ray(rx, ry);
+  const Vec3d o(c.o), d(c.d);
+  const double camera_t = (focal_distance - o.z) / d.z;  // along the unit camera-space direction
+  const double len = length(camera_to_world.transform_vector(d));
+  axes.x_axis = Vec3f(camera_to_world.transform_vector(Vec3d{lens_radius, 0, 0}));
+  axes.y_axis = Vec3f(camera_to_world.transform_vector(Vec3d{0, lens_radius, 0}));
+  axes.focus_t = float(camera_t * len);
+  return axes;
+}
+
 bool Camera::world_to_raster(const Vec3d& p, double& rx, double& ry) const {
   Vec3d c = world_to_camera.transform_point(p);
   double sx = c.x, sy = c.y;

@@ -21,6 +21,11 @@ struct Camera {
   double near_clip = 1e-10, far_clip = 1e38;
   Matrix4 world_to_camera;
   Matrix4 camera_to_world;
+  // A thin lens (RI DepthOfField, modelled as pbrt-v4's perspective camera): a disc of this
+  // radius on the plane z = 0 of camera space, focused on the plane z = focal_distance. A radius
+  // of 0 is a pinhole (RI's default fstop of infinity).
+  double lens_radius = 0;
+  double focal_distance = 1;
 
   // Sets camera_to_world from world_to_camera.
   void finalize() { camera_to_world = world_to_camera.inverse(); }
@@ -30,8 +35,20 @@ struct Camera {
   // Camera-space ray through a raster position (unit direction for perspective, +z for orthographic),
   // clipped to [near, far] along camera z.
   Ray camera_ray(double rx, double ry) const;
-  // World-space ray (unit direction) through a raster position.
+  // World-space ray (unit direction) through a raster position (the lens centre's ray).
   Ray generate_ray(double rx, double ry) const;
+  // World-space ray through a raster position from the lens point (lens_x, lens_y) of the unit
+  // disc (scaled by lens_radius): it meets the lens centre's ray on the focal plane.
+  Ray generate_lens_ray(double rx, double ry, double lens_x, double lens_y) const;
+  bool has_lens() const { return lens_radius > 0; }
+  // The lens as world-space vectors, for footprints: the lens disc's radius along camera x and
+  // y (`x_axis`, `y_axis`) and the distance along the lens centre's ray `ray` (unit direction,
+  // from generate_ray) at which it meets the focal plane.
+  struct LensAxes {
+    Vec3f x_axis, y_axis;
+    float focus_t = 0;
+  };
+  LensAxes lens_axes(double rx, double ry) const;
   // Projects a world-space point to raster coordinates; returns false when behind the camera.
   bool world_to_raster(const Vec3d& p, double& rx, double& ry) const;
 };

@@ -29,6 +29,7 @@ struct Options {
   std::optional<ScreenWindow> screen_window;  // explicit ScreenWindow
   std::optional<double> frame_aspect;          // explicit FrameAspectRatio
   double near_clip = 1e-10, far_clip = 1e38;
+  double lens_radius = 0, focal_distance = 1;  // DepthOfField: a pinhole by default
   SourceLoc crop_loc;  // of the CropWindow in effect (its error is reported at WorldBegin)
   std::vector<PendingLight> pre_world_lights;
   std::vector<std::string> texture_search_path;  // absolute folders (texture_paths.h)

@@ -137,6 +137,8 @@ void SceneBuilder::start_scene(const SourceLoc& loc) {
   cam.screen = options_.screen_window.value_or(default_screen_window(aspect));
   cam.near_clip = options_.near_clip;
   cam.far_clip = options_.far_clip;
+  cam.lens_radius = options_.lens_radius;
+  cam.focal_distance = options_.focal_distance;
   cam.world_to_camera = checked_camera_transform(loc);
   cam.finalize();
   camera_to_world_ = cam.camera_to_world;

@@ -24,6 +24,8 @@ constexpr int kMaxResolution = 16384;
 constexpr double kMaxPixelSamples = 64;
 // Widest pixel filter (pixels): 16 is 8 pixels each side, eight times the RI default of 2.
 constexpr double kMaxFilterWidth = 16;
+// RI_INFINITY as RIB files write it (ri.h: 1.0e38): an f-stop this large is a pinhole.
+constexpr double kRiInfinity = 1e38;
 
 }  // namespace
 
@@ -113,6 +115,22 @@ void SceneBuilder::clipping(double n, double f, const SourceLoc& loc) {
   if (!(n > 0) || !(f > n)) throw RibError(fmt::format("near {} and far {}: needs 0 < near < far", n, f));
   options_.near_clip = n;
   options_.far_clip = f;
+}
+
+void SceneBuilder::depth_of_field(double fstop, double focal_length, double focal_distance, const SourceLoc& loc) {
+  if (!option_allowed("DepthOfField", loc)) return;
+  // RI_INFINITY (1e38 in RIB files) or more: a pinhole, as by default.
+  if (fstop >= kRiInfinity) {
+    options_.lens_radius = 0;
+    return;
+  }
+  if (!(fstop > 0) || !(focal_length > 0) || !(focal_distance > 0) || !std::isfinite(focal_length) ||
+      !std::isfinite(focal_distance))
+    throw RibError(fmt::format("fstop {}, focal length {} and focal distance {} must be positive", fstop,
+                               focal_length, focal_distance));
+  // A lens of diameter focallength / fstop, in camera-space units (pbrt-v4's thin lens).
+  options_.lens_radius = focal_length / (2 * fstop);
+  options_.focal_distance = focal_distance;
 }
 
 void SceneBuilder::pixel_samples(double xs, double ys, const SourceLoc& loc) {

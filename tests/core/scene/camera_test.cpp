@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 namespace darc {
 namespace {
@@ -57,6 +58,43 @@ TEST(Camera, RaysRoundTripThroughRaster) {
       EXPECT_NEAR(rx, x, 1e-3);
       EXPECT_NEAR(ry, y, 1e-3);
     }
+}
+
+TEST(Camera, LensRaysMeetTheCentreRayOnTheFocalPlane) {
+  // A thin lens of radius 0.2 focused at camera z = 4, under a camera transform with a scale:
+  // every lens ray through a raster point meets the lens centre's ray where camera z = 4, and
+  // lens_axes gives that distance along the centre ray and the lens radius in world units.
+  Camera c = perspective_camera(320, 240, 30);
+  c.world_to_camera = Matrix4::scale({2, 2, 2}) * Matrix4::rotate(20, {0, 1, 0}) * Matrix4::translate({1, 2, 5});
+  c.finalize();
+  c.lens_radius = 0.2;
+  c.focal_distance = 4;
+  ASSERT_TRUE(c.has_lens());
+  for (double x : {0.5, 200.25})
+    for (double y : {0.5, 120.0}) {
+      const Ray centre = c.generate_ray(x, y);
+      const Camera::LensAxes axes = c.lens_axes(x, y);
+      const Vec3d focus = Vec3d(centre.at(axes.focus_t));
+      EXPECT_NEAR(c.world_to_camera.transform_point(focus).z, 4, 1e-4);
+      EXPECT_NEAR(length(axes.x_axis), 0.1f, 1e-6f) << "0.2 camera units are 0.1 world units";
+      EXPECT_NEAR(dot(axes.x_axis, axes.y_axis), 0.0f, 1e-6f);
+      for (auto [lx, ly] : {std::pair{1.0, 0.0}, std::pair{-0.3, 0.8}}) {
+        const Ray lens = c.generate_lens_ray(x, y, lx, ly);
+        EXPECT_NEAR(length(lens.d), 1.0f, 1e-5f);
+        // Its origin is the lens point, its line passes through the focal point.
+        const Vec3d o = c.world_to_camera.transform_point(Vec3d(lens.o));
+        EXPECT_NEAR(o.x, 0.2 * lx, 1e-5);
+        EXPECT_NEAR(o.y, 0.2 * ly, 1e-5);
+        EXPECT_NEAR(o.z, 0, 1e-5);
+        const Vec3d to_focus = focus - Vec3d(lens.o);
+        EXPECT_NEAR(length(cross(to_focus, Vec3d(lens.d))), 0, 1e-4 * length(to_focus));
+      }
+    }
+  // Without a lens the lens rays are the pinhole's.
+  c.lens_radius = 0;
+  const Ray a = c.generate_lens_ray(10, 20, 0.5, 0.5), b = c.generate_ray(10, 20);
+  EXPECT_EQ(a.o, b.o);
+  EXPECT_EQ(a.d, b.d);
 }
 
 TEST(Camera, OrthographicRaysAreParallelAlongPlusZ) {

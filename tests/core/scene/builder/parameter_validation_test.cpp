@@ -98,6 +98,19 @@ std::vector<Row> option_rows() {
        [](const Scene& s) { EXPECT_EQ(s.camera.near_clip, 1e-10); }},
       {"clipping-far", before_world("Clipping 5 5"), error(1, "Clipping", "near 5 and far 5: needs 0 < near < far"),
        [](const Scene& s) { EXPECT_EQ(s.camera.far_clip, 1e38); }},
+      {"dof-fstop", before_world("DepthOfField 0 0.5 4"),
+       error(1, "DepthOfField", "fstop 0, focal length 0.5 and focal distance 4 must be positive"),
+       [](const Scene& s) { EXPECT_FALSE(s.camera.has_lens()) << "the request is skipped: a pinhole"; }},
+      {"dof-focal-distance", before_world("DepthOfField 2 0.5 -1"),
+       error(1, "DepthOfField", "fstop 2, focal length 0.5 and focal distance -1 must be positive"),
+       [](const Scene& s) { EXPECT_FALSE(s.camera.has_lens()); }},
+      {"dof-infinite-fstop", before_world("DepthOfField 2 0.5 4\nDepthOfField 1e38 0 0"), std::nullopt,
+       [](const Scene& s) { EXPECT_FALSE(s.camera.has_lens()) << "RI_INFINITY: back to a pinhole"; }},
+      {"dof-lens", before_world("DepthOfField 2 0.5 4"), std::nullopt,
+       [](const Scene& s) {
+         EXPECT_DOUBLE_EQ(s.camera.lens_radius, 0.125) << "focallength / (2 fstop)";
+         EXPECT_DOUBLE_EQ(s.camera.focal_distance, 4);
+       }},
       {"clipping-tiny-near", before_world("Clipping 1e-20 10"), std::nullopt,
        [](const Scene& s) { EXPECT_EQ(s.camera.near_clip, 1e-20); }},
       {"pixelsamples-range", before_world("PixelSamples 0.5 2"),
@@ -165,8 +178,8 @@ std::vector<Row> unused_request_rows() {
       {"motion-times", in_world("MotionBegin [1 0]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd"),
        warning(2, "MotionBegin", "motion blur is not supported: the first motion sample is used"),
        [](const Scene& s) { EXPECT_EQ(s.surfaces.spheres.size(), 1u); }},
-      {"unsupported-numbers", before_world("DepthOfField -1 0 0"),
-       warning(1, "DepthOfField", "not supported by darc: ignored"), nothing},
+      {"unsupported-numbers", in_world("TextureCoordinates -1 0 0 0 0 1 1 1"),
+       warning(2, "TextureCoordinates", "not supported by darc: ignored"), nothing},
   };
 }
 
