@@ -201,8 +201,9 @@ float collect_fragments(const DistanceContext& ctx, const Ray& ray_in, const Ray
           const Material& m = scene.materials[cs.attribute_id[local]];
           if (cs.oriented(local) && m.hides_back_of(lerp(h.u, cs.end_normal(local, 0), cs.end_normal(local, 1)), ray.d))
             return;
-          abuffer.add(
-              fragment(h.t, h.coverage, p, h.mask, cs.strand_id[local], h.u, h.distance), shade);
+          Fragment f = fragment(h.t, h.coverage, p, h.mask, cs.strand_id[local], h.u, h.distance);
+          f.time = h.time;
+          abuffer.add(f, shade);
           nearest = std::min(nearest, h.t);
           break;
         }
@@ -419,6 +420,8 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
                              const PathState& path) override {
     const SecondaryRaySettings& s = ctx_.base.secondary;
     Ray ray{at.P, l, s.ray_offset, distance};
+    ray.time = at.time;
+    ray.sweeps_shutter = at.sweeps_shutter;
     // The receiving patch at most kShadowPatchElongation times the incoming footprint's width
     // at P.
     const float max_extent =
@@ -474,7 +477,10 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
       filter.origin_layer = ctx_.base.scene.surfaces.layer(local);
       filter.origin_layer_min_t = 4 * footprint.reach(0);
     }
-    return trace_footprint_transmittance(ctx_, Ray{patch.P, dir, s.ray_offset, to_light}, footprint, counters_,
+    Ray ray{patch.P, dir, s.ray_offset, to_light};
+    ray.time = at.time;
+    ray.sweeps_shutter = at.sweeps_shutter;
+    return trace_footprint_transmittance(ctx_, ray, footprint, counters_,
                                          scratch_.at(size_t(path.depth) + 1), filter,
                                          stopping_transmittance(s, path.weight, kDistanceMinTransmittance),
                                          &seen_->weights);
@@ -509,9 +515,10 @@ SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const
   auto shade = [&](const Fragment& f) -> ShadedFragment {
     // Surfaces are shaded where the sub-ray that found them hit, strands where the footprint sees
     // them (ABuffer::at_visible_part); the footprint stays the ray's.
-    const Ray shading_ray = f.at_sub_ray        ? footprint_sub_ray_at(ray, footprint, f.sub_u, f.sub_v)
-                            : f.surface_point < 0 ? ray
-                                                  : footprint_sub_ray(ray, footprint, f.surface_point);
+    Ray shading_ray = f.at_sub_ray        ? footprint_sub_ray_at(ray, footprint, f.sub_u, f.sub_v)
+                      : f.surface_point < 0 ? ray
+                                            : footprint_sub_ray(ray, footprint, f.surface_point);
+    if (f.time >= 0) shading_ray.time = f.time;
     // A surface moved to where it is seen (ABuffer::at_visible_part): its depth there on its
     // plane, and the patch it is seen on as the footprint of what leaves it.
     float t = f.t;
@@ -590,6 +597,9 @@ void render_tile_distance(const DistanceContext& ctx, const PixelRect& rect, Til
   const Camera& cam = ctx.base.scene.camera;
   RayScratchStack scratch(ctx.base.scene.accel);
   double spacing = 1.0 / std::max(nx, ny);
+  // Motion blur: every ray stands for the whole shutter (moving strands give their coverage
+  // averaged over it) and sees the scene at mid-shutter for depth and shading.
+  const bool moves = ctx.base.scene.curves.has_motion();
   for (int py = rect.y0; py < rect.y1; ++py)
     for (int px = rect.x0; px < rect.x1; ++px)
       for (int sy = 0; sy < ny; ++sy)
@@ -597,6 +607,10 @@ void render_tile_distance(const DistanceContext& ctx, const PixelRect& rect, Til
           // Stratum centres: the footprint, not jitter, does the antialiasing.
           double x = px + (sx + 0.5) / nx, y = py + (sy + 0.5) / ny;
           Ray ray = cam.generate_ray(x, y);
+          if (moves) {
+            ray.time = 0.5f;
+            ray.sweeps_shutter = true;
+          }
           RayFootprint fp = camera_footprint(cam, x, y, spacing, ray, ctx.min_radius);
           ++counters.primary_rays;
           SampleValue v = trace_distance_ray(ctx, ray, fp, counters, scratch);

@@ -29,6 +29,7 @@ struct Fragment {
   uint32_t strand = kNoStrand;  // curve strand id; kNoStrand for surfaces
   uint32_t primitive = 0;    // grid primitive index (what to shade)
   float u = 0;               // along the curve segment (curves only)
+  float time = -1;           // a moving strand's shading time (CurveFragmentHit::time; -1: the ray's)
   // Set when two fragments were merged because the list was full: their light and opacity
   // are then already shaded, per footprint point, in the A-buffer's merged record `merged`.
   bool preshaded = false;

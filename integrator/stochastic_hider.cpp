@@ -19,8 +19,10 @@ constexpr float kMinTransmittance = 1e-3f;
 constexpr int kMaxLayers = 256;
 // Relative offset that moves a continued ray past the surface it just hit.
 constexpr float kContinueEpsilon = 1e-5f;
-// The SampleRng stream of a pixel's lens permutation: above every sample index (at most 64 x 64).
+// The SampleRng streams of a pixel's lens and time permutations: above every sample index (at
+// most 64 x 64).
 constexpr uint32_t kLensPermutationStream = 0xFFFFFFFFu;
+constexpr uint32_t kTimePermutationStream = 0xFFFFFFFEu;
 // Secondary rays start this fraction of the scene's size away from their point.
 constexpr float kRayOffsetSceneFraction = 1e-6f;
 // A sphere a ray leaves is not hit again nearer than this fraction of the scene's size.
@@ -36,6 +38,7 @@ class ExactSecondaryRays : public SecondaryRayTracer {
   Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance, const RayFootprint*,
                              const PathState& path) override {
     Ray ray{at.P, l, ctx_.secondary.ray_offset, distance};
+    ray.time = at.time;
     HitFilter filter = shadow_filter(at);
     Vec3f tr{1, 1, 1};
     TraversalScratch& traversal = scratch_.at(size_t(path.depth) + 1).traversal;
@@ -108,13 +111,13 @@ SampleValue trace_camera_ray(const HiderContext& ctx, const Ray& camera_ray, Ray
 
 namespace {
 
-// The lens strata of one pixel's samples: sample i takes lens stratum strata[i], a permutation
-// keyed by the pixel (Fisher-Yates from its own generator), so that lens positions are
-// stratified over the disc and unrelated to the samples' image positions (what correlated
-// strata would turn into a pattern in the blur).
-void shuffle_lens_strata(uint32_t px, uint32_t py, uint32_t seed, std::vector<uint32_t>& strata) {
+// The lens (or time) strata of one pixel's samples: sample i takes stratum strata[i], a
+// permutation keyed by the pixel and the dimension (Fisher-Yates from its own generator), so that
+// lens positions and times are stratified and unrelated to the samples' image positions (what
+// correlated strata would turn into a pattern in the blur) and to each other.
+void shuffle_strata(uint32_t px, uint32_t py, uint32_t stream, uint32_t seed, std::vector<uint32_t>& strata) {
   for (size_t i = 0; i < strata.size(); ++i) strata[i] = uint32_t(i);
-  SampleRng rng(px, py, kLensPermutationStream, seed);
+  SampleRng rng(px, py, stream, seed);
   for (size_t i = strata.size(); i > 1; --i) {
     const size_t j = size_t(rng.next_u64() % i);
     std::swap(strata[i - 1], strata[j]);
@@ -128,10 +131,14 @@ void render_tile_stochastic(const HiderContext& ctx, const PixelRect& rect, Tile
   const int nx = ctx.samples_x, ny = ctx.samples_y;
   const Camera& camera = ctx.scene.camera;
   RayScratchStack scratch(ctx.scene.accel);
-  std::vector<uint32_t> lens_strata(size_t(nx) * size_t(ny));
+  std::vector<uint32_t> lens_strata(size_t(nx) * size_t(ny)), time_strata(lens_strata.size());
+  // Motion blur: each sample sees the scene at one time of the shutter, stratified over the
+  // pixel's samples (drawn only when something moves, so that still scenes keep their images).
+  const bool moves = ctx.scene.curves.has_motion();
   for (int py = rect.y0; py < rect.y1; ++py)
     for (int px = rect.x0; px < rect.x1; ++px) {
-      if (camera.has_lens()) shuffle_lens_strata(uint32_t(px), uint32_t(py), ctx.seed, lens_strata);
+      if (camera.has_lens()) shuffle_strata(uint32_t(px), uint32_t(py), kLensPermutationStream, ctx.seed, lens_strata);
+      if (moves) shuffle_strata(uint32_t(px), uint32_t(py), kTimePermutationStream, ctx.seed, time_strata);
       for (int sy = 0; sy < ny; ++sy)
         for (int sx = 0; sx < nx; ++sx) {
           int index = sy * nx + sx;
@@ -149,6 +156,7 @@ void render_tile_stochastic(const HiderContext& ctx, const PixelRect& rect, Tile
           } else {
             ray = camera.generate_ray(x, y);
           }
+          if (moves) ray.time = (float(time_strata[size_t(index)]) + rng.next_float()) / float(nx * ny);
           ++counters.primary_rays;
           SampleValue v = trace_camera_ray(ctx, ray, counters, scratch);
           acc.add_sample(x, y, {v.color.x, v.color.y, v.color.z, v.alpha}, v.depth);

@@ -29,6 +29,7 @@ class ArgReader {
   }
   BasisArg read(RiBasis, const char* what) { return args_.basis(what); }
   std::vector<int> read(RiIntArray, const char* what) { return args_.integer_array(what); }
+  std::vector<double> read(RiFloatArray, const char* what) { return args_.number_array(what); }
   // A run of N numbers is read whole at its first, then handed out one by one.
   template <int N>
   double read(RiNumbers<N>, const char* what) {
@@ -137,7 +138,6 @@ Table make_table() {
 #undef DARC_RI_REQUEST
 #undef DARC_RI_REQUEST_PL
       // Accepted without effect.
-      {"Shutter", ignored},
       {"ShadingRate", ignored},
       {"ShadingInterpolation", ignored},
       {"RelativeDetail", ignored},
@@ -149,8 +149,6 @@ Table make_table() {
       {"DetailRange", ignored},
       {"GeometricApproximation", ignored},
       {"TextureCoordinates", ignored},
-      {"MotionBegin", ignored},
-      {"MotionEnd", ignored},
       {"ArchiveRecord", ignored},
       {"Skew", ignored},
       {"Imager", ignored_with_params<1, 0>},

@@ -49,6 +49,7 @@ void write_arg(std::ostream& out, RiString, const std::string& v) { out << ' ' <
 void write_arg(std::ostream& out, RiMatrix, const std::array<double, 16>& v) { out << ' ' << bracketed(v); }
 void write_arg(std::ostream& out, RiColor, const std::array<float, 3>& v) { out << ' ' << bracketed(v); }
 void write_arg(std::ostream& out, RiIntArray, const std::vector<int>& v) { out << ' ' << bracketed(v); }
+void write_arg(std::ostream& out, RiFloatArray, const std::vector<double>& v) { out << ' ' << bracketed(v); }
 
 // A handle that was written as an integer is written back as one.
 std::string rib_handle(const std::string& handle) {

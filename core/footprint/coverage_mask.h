@@ -65,14 +65,37 @@ inline CoverageMask half_plane_mask(const FootprintSquare& sq, float ex, float e
   return line_distance_mask(sq, ex, ey, tx, ty, [](float s) { return s >= 0.0f; });
 }
 
+// Motion blur: each mask point also stands for one time of the shutter, so that a strand that
+// sweeps across the footprint covers the points it passes when it passes them (two strands
+// moving together a little apart cover different points: they add up, as they cover the
+// footprint at different times; composited as if independent, they would not). The 64 times are
+// (k + 1/2) / 64 for a permutation k of the points in which every row and every column of the
+// grid holds each eighth of the shutter once: k = 8 ((i + 3j) mod 8) + ((2i + j) mod 8).
+inline float mask_point_time(int point) {
+  const int i = point % kMaskSide, j = point / kMaskSide;
+  const int k = kMaskSide * ((i + 3 * j) % kMaskSide) + ((2 * i + j) % kMaskSide);
+  return (float(k) + 0.5f) / float(kMaskSide * kMaskSide);
+}
+
+// A strand axis that moves across the footprint during the shutter times [t0, t1) ([t0, t1] for
+// the last interval, `to_close`): its line is offset along its normal by d0 at t0 and by d1 at
+// t1 (linearly between) from where it is given.
+struct SweptLine {
+  float t0 = 0, t1 = 1;
+  float d0 = 0, d1 = 0;
+  bool to_close = false;
+};
+
 // The `count` points of the square nearest to a strand, among the `allowed` ones: nearest to
 // the axis line through c with unit normal n (a band), or to the point c itself when `point`
 // is set (a strand seen end-on). Choosing the mask by count rather than by a width threshold
 // makes its size match the exact coverage to 1/64, so fragments in the same place share points
 // (they occlude each other) and fragments side by side do not (they add up). Ties go to the
 // lower point index, so masks are deterministic.
+// With `sweep`, a point is nearest to the line where it is at the point's time (mask_point_time),
+// and points whose times lie outside the sweep's are not allowed.
 inline CoverageMask nearest_points_mask(const FootprintSquare& sq, float cx, float cy, float nx, float ny, bool point,
-                                        int count, CoverageMask allowed) {
+                                        int count, CoverageMask allowed, const SweptLine* sweep = nullptr) {
   constexpr int kPoints = kMaskSide * kMaskSide;
   count = std::clamp(count, 0, kPoints);
   if (count == 0) return 0;
@@ -85,7 +108,19 @@ inline CoverageMask nearest_points_mask(const FootprintSquare& sq, float cx, flo
       float u = (float(i) + 0.5f) * step - 0.5f, v = (float(j) + 0.5f) * step - 0.5f;
       float px = u * sq.ax_x + v * sq.ay_x - cx, py = u * sq.ax_y + v * sq.ay_y - cy;
       int b = j * kMaskSide + i;
-      float d = point ? px * px + py * py : std::abs(px * nx + py * ny);
+      float d;
+      if (sweep) {
+        const float t = mask_point_time(j * kMaskSide + i);
+        const float span = sweep->t1 - sweep->t0;
+        if (t < sweep->t0 || (t >= sweep->t1 && !sweep->to_close) || !(span > 0.0f)) {
+          d = std::numeric_limits<float>::infinity();
+        } else {
+          const float offset = sweep->d0 + (sweep->d1 - sweep->d0) * ((t - sweep->t0) / span);
+          d = std::abs(px * nx + py * ny - offset);
+        }
+      } else {
+        d = point ? px * px + py * py : std::abs(px * nx + py * ny);
+      }
       if (!((allowed >> b) & 1) || !(d <= std::numeric_limits<float>::max())) d = std::numeric_limits<float>::infinity();
       key[b] = (uint64_t(std::bit_cast<uint32_t>(d)) << 32) | uint64_t(b);
     }

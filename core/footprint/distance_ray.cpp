@@ -28,6 +28,8 @@ DistanceRay make_distance_ray(const Ray& ray, const RayFootprint& footprint) {
   r.ray_length = float(ray_length);
   r.t_min = ray.tmin;
   r.t_max = ray.tmax;
+  r.time = ray.time;
+  r.sweeps_shutter = ray.sweeps_shutter;
   r.reach = footprint.reach_bound();
   r.footprint = &footprint;
   r.depth_min = r.t_min * r.ray_length;

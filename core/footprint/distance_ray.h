@@ -18,6 +18,8 @@ struct DistanceRay {
   Vec3f frame_x, frame_y;  // with dir, a right-handed orthonormal frame (frame_y = dir x frame_x)
   float ray_length = 1;    // |ray.d|: t = depth / ray_length
   float t_min = 0, t_max = 0;
+  float time = 0;               // Ray::time
+  bool sweeps_shutter = false;  // Ray::sweeps_shutter
   ReachBound reach;        // the footprint's reach at ray parameter t (RayFootprint::reach_bound)
   const RayFootprint* footprint = nullptr;
   // A footprint whose sub-rays start on a plane and all leave it to one side (a shadow ray's

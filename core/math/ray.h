@@ -13,6 +13,11 @@ struct Ray {
   Vec3f d;
   float tmin = 0.0f;
   float tmax = std::numeric_limits<float>::infinity();
+  // Motion blur: the shutter time (0 at open, 1 at close) at which the ray sees moving geometry.
+  float time = 0.0f;
+  // The distance hider's rays stand for the whole shutter: a moving strand gives the coverage it
+  // has averaged over the shutter (its shape at `time` for depth and shading).
+  bool sweeps_shutter = false;
 
   Vec3f at(float t) const { return o + d * t; }
 };

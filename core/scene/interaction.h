@@ -20,6 +20,10 @@ struct Interaction {
   uint32_t strand = kNoStrand;  // the curve strand hit (kNoStrand on surfaces)
   bool is_curve = false;
   float t = 0;  // along the ray that found it
+  // The ray's shutter time and whether it stands for the whole shutter (Ray): rays leaving the
+  // point (shadows, reflections) see the scene as it did.
+  float time = 0;
+  bool sweeps_shutter = false;
   float u = 0;  // along a curve segment; surface parameters where the surface has them
   float v = 0;
   Vec3f P;

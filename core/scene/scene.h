@@ -82,6 +82,9 @@ struct OutputSettings {
   std::string filter_name = "gaussian";
   double filter_width[2] = {2, 2};
   double exposure_gain = 1, exposure_gamma = 1;
+  // Shutter open close (RIB times). Motion blur when close > open: moving geometry keeps its keys
+  // at shutter-normalised times (0 at open, 1 at close) and the hiders sample or sweep them.
+  double shutter_open = 0, shutter_close = 0;
   std::string hider = "hidden";
   // Option "trace" "int maxdepth": the longest chain of reflection and refraction rays (PRMan's
   // name and default). Shadow rays do not count.

@@ -105,6 +105,9 @@ class RecordingTarget : public RiTarget {
     c.strings.push_back(v.name);
     c.numbers.insert(c.numbers.end(), v.matrix.begin(), v.matrix.end());
   }
+  static void flatten(RecordedCall& c, RiFloatArray, const std::vector<double>& v) {
+    c.numbers.insert(c.numbers.end(), v.begin(), v.end());
+  }
   void flatten(RecordedCall& c, RiIntArray, const std::vector<int>& v) {
     if (int_arrays_in_call_++ > 0) c.numbers.push_back(-1);  // separator
     c.numbers.insert(c.numbers.end(), v.begin(), v.end());

@@ -38,6 +38,7 @@ std::array<double, 16> sample(RiMatrix) {
 std::array<float, 3> sample(RiColor) { return {0.1f, 0.2f, 0.3f}; }
 BasisArg sample(RiBasis) { return {"catmull-rom", {}}; }
 std::vector<int> sample(RiIntArray) { return {4, 5}; }
+std::vector<double> sample(RiFloatArray) { return {0, 0.5}; }
 template <int N>
 double sample(RiNumbers<N>) {
   return 1.5;

@@ -2,6 +2,7 @@
 
 #include "core/footprint/polygon_coverage.h"
 #include "core/footprint/start_cut.h"
+#include "core/footprint/swept_coverage.h"
 #include "core/geometry/curves/curve_intersector.h"
 
 #include <algorithm>
@@ -46,6 +47,13 @@ struct FootprintAt {
   }
 };
 
+// A moving segment over one interval between its keys, in the ray's frame (turned along the
+// chord): its control points at the interval's start and end (the shape the leaves see is the
+// one half-way).
+struct MovingKeys {
+  std::array<Vec3f, 4> from, to;
+};
+
 struct DistanceState {
   float ray_length;
   float t_min, t_max;
@@ -77,6 +85,16 @@ struct DistanceState {
   Vec3f normal0, normal1, dir;
   ReachBound reach;  // the footprint's reach at ray parameter t
   bool reach_grows = true;  // reach.grows(): a depth range's largest reach is at its far end
+  // Motion blur, for a ray that sweeps the shutter past a moving segment: the segment is the one
+  // at the ray's time (the control points the leaves see), and comes within `motion` of its
+  // shape then at other times. Its keys in this frame give how far each point moves across a
+  // leaf's band (swept_band_coverage).
+  float motion = 0;
+  const MovingKeys* keys = nullptr;
+  float time_from = 0, time_to = 1;  // the interval of the shutter the keys span
+  bool ends_shutter = false;         // the last interval (its mask points' times include 1)
+  float time = -1;                   // the best leaf's: when it passes the centre (-1: the ray's)
+  Vec3f mid_cp[4];  // the segment half-way through the interval, in this frame
   // Best fragment so far, and the geometry its coverage mask needs.
   bool found = false;
   float coverage = 0, t = 0, u = 0, distance = 0;
@@ -94,6 +112,8 @@ struct DistanceState {
     float coverage, px, py, tx, ty, half_width;
     bool end_on;
     bool cut_start, cut_end;  // whether the segment's end lines bound this piece (distance_leaf)
+    bool swept = false;       // moving during [time_from, time_to): its line moves by `sweep`
+    SweptLine sweep;
   };
   std::array<Piece, 4> pieces{};
   int piece_count = 0;
@@ -156,6 +176,29 @@ float band_coverage(const DistanceState& s, const FootprintAt& f, float d, float
       float a, b;
       f.square_extents(-ty, tx, a, b);  // extents across the band
       return coverage_square(d, hw, a, b);
+    }
+  }
+  return 0.0f;
+}
+
+// A band of half-width hw whose axis, across the unit normal (nx, ny), moves from signed
+// distance d0 to d1 from the footprint centre during the interval: its coverage averaged over
+// the interval, in closed form (swept_coverage.h).
+float swept_band_coverage(const DistanceState& s, const FootprintAt& f, float d0, float d1, float hw, float nx,
+                          float ny) {
+  if (f.binary) {
+    // No footprint: the share of the time the axis is within hw of the centre.
+    const double lo = std::min(d0, d1), hi = std::max(d0, d1);
+    if (!(hi > lo)) return std::abs(d0) <= hw ? 1.0f : 0.0f;
+    return float(std::max(0.0, std::min(hi, double(hw)) - std::max(lo, -double(hw))) / (hi - lo));
+  }
+  switch (s.model) {
+    case CoverageModel::Box: return swept_coverage_box(d0, d1, hw, f.r_box);
+    case CoverageModel::Disc: return swept_coverage_disc(d0, d1, hw, f.r_disc);
+    case CoverageModel::Square: {
+      float a, b;
+      f.square_extents(nx, ny, a, b);
+      return swept_coverage_square(d0, d1, hw, a, b);
     }
   }
   return 0.0f;
@@ -268,8 +311,8 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
   // half-plane tests here, since a strand beside the footprint covers it whichever leaf
   // reports it (the best leaf per segment wins, the best segment per strand in the A-buffer).
   const bool end_on = chord_length2 <= point_chord * point_chord;
-  float w = end_on ? (cp[0].z <= cp[3].z ? 0.0f : 1.0f)
-                   : std::clamp((-cp[0].x * chord_x - cp[0].y * chord_y) / chord_length2, 0.0f, 1.0f);
+  const float w_unclamped = end_on ? 0.0f : (-cp[0].x * chord_x - cp[0].y * chord_y) / chord_length2;
+  float w = end_on ? (cp[0].z <= cp[3].z ? 0.0f : 1.0f) : std::clamp(w_unclamped, 0.0f, 1.0f);
   float u = std::clamp(u0 + (u1 - u0) * w, u0, u1);
   float half_width = 0.5f * bezier_evaluate(width, w) * orientation_scale(s, u);
   if (!(half_width > 0.0f)) return;
@@ -290,7 +333,33 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
     tx = 1.0f;
     ty = 0.0f;
   }
-  float coverage = end_on ? end_on_coverage(s, f, pc.x, pc.y, half_width) : band_coverage(s, f, d, half_width, tx, ty);
+  float coverage;
+  float beyond_leaf = 0.0f;
+  float leaf_time = -1.0f;
+  bool swept = false;
+  SweptLine sweep;
+  if (s.keys && !end_on) {
+    // The strand point at u moves from the interval's start to its end; across the band (whose
+    // direction is frozen at the middle: turns within an interval are small) from d0 to d1.
+    const float nx = -ty, ny = tx;
+    const Vec3f at_middle = bezier_evaluate(s.mid_cp, u);
+    const float d_mid = pc.x * nx + pc.y * ny;
+    const Vec3f from = bezier_evaluate(s.keys->from.data(), u) - at_middle;
+    const Vec3f to = bezier_evaluate(s.keys->to.data(), u) - at_middle;
+    const float d0 = d_mid + from.x * nx + from.y * ny, d1 = d_mid + to.x * nx + to.y * ny;
+    coverage = swept_band_coverage(s, f, d0, d1, half_width, nx, ny);
+    // The centre's offset along the strand from pc (not 0 where pc is the leaf's clamped end):
+    // the band is no infinite line past the leaf's end (below, where no end line cuts it).
+    if (w_unclamped < 0.0f || w_unclamped > 1.0f) beyond_leaf = std::abs(pc.x * tx + pc.y * ty);
+    // Its mask points are those it passes at their times (mask_point_time).
+    swept = true;
+    sweep = {s.time_from, s.time_to, d0 - d_mid, d1 - d_mid, s.ends_shutter};
+    // Shaded as it is when it passes the footprint's centre (nearest it, if it does not).
+    const float cross = d0 == d1 ? 0.5f : std::clamp(d0 / (d0 - d1), 0.0f, 1.0f);
+    leaf_time = s.time_from + (s.time_to - s.time_from) * cross;
+  } else {
+    coverage = end_on ? end_on_coverage(s, f, pc.x, pc.y, half_width) : band_coverage(s, f, d, half_width, tx, ty);
+  }
   StartCut cut;
   CoverageMask cut_points = 0;
   float started = 1.0f;
@@ -333,6 +402,7 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
   if (cut_end)
     fe = end_falloff(s, f, -(ends.end_point.x * ends.end_tx + ends.end_point.y * ends.end_ty), ends.end_tx,
                      ends.end_ty);
+  if (beyond_leaf > 0.0f && !cut_start && !cut_end) coverage *= end_falloff(s, f, -beyond_leaf, tx, ty);
   const float within_ends = cut_start && cut_end
                                 ? both_ends_falloff(fs, fe, ends.start_tx * ends.end_tx + ends.start_ty * ends.end_ty)
                                 : fs * fe;
@@ -346,7 +416,7 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
     beyond = float(mask_count(m)) / float(kMaskSide * kMaskSide);
   }
   coverage *= within_ends * started;
-  if (coverage > 0.0f) s.add_piece({coverage, pc.x, pc.y, tx, ty, half_width, end_on, cut_start, cut_end});
+  if (coverage > 0.0f) s.add_piece({coverage, pc.x, pc.y, tx, ty, half_width, end_on, cut_start, cut_end, swept, sweep});
   s.best_within_ends = std::max(s.best_within_ends, coverage);
   // The best leaf (its depth and shading point) is chosen by all it covers.
   coverage = std::min(1.0f, coverage + beyond);
@@ -360,6 +430,7 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
     s.coverage = coverage;
     s.t = t;
     s.best_cut = near_start && started < 1.0f;
+    s.time = leaf_time;
     s.cut = cut;
     s.cut_points = cut_points;
     s.u = u;
@@ -394,7 +465,8 @@ CoverageMask fragment_mask(const DistanceState& s, const EndFalloff& ends, float
     if (p.cut_start) allowed &= start_side;
     if (p.cut_end) allowed &= end_side;
     int count = mask_points_for(p.coverage);
-    CoverageMask m = nearest_points_mask(sq, p.px, p.py, -p.ty, p.tx, p.end_on, count, allowed);
+    CoverageMask m = nearest_points_mask(sq, p.px, p.py, -p.ty, p.tx, p.end_on, count, allowed,
+                                         p.swept ? &p.sweep : nullptr);
     int k = mask_count(m);
     total += k > 0 ? p.coverage * float(mask_count(m & ~all)) / float(k) : p.coverage;
     all |= m;
@@ -458,7 +530,7 @@ void distance_recursive(const Vec3f cp[4], const float width[4], float u0, float
     float z_lo = s.reach_grows ? z_hi
                                : std::min(std::min(sub_cp[0].z, sub_cp[1].z), std::min(sub_cp[2].z, sub_cp[3].z));
     // Cull with the half-width plus the largest footprint over the sub-curve's depth range.
-    float margin = hw + s.reach_over_depths(z_lo - hw, z_hi + hw);
+    float margin = hw + s.motion + s.reach_over_depths(z_lo - hw - s.motion, z_hi + hw + s.motion);
     if (!bound_overlaps_ray(sub_cp, margin, s.depth_min, s.t_max * s.ray_length)) continue;
     if (s.behind_start(sub_cp, hw)) continue;
     distance_recursive(sub_cp, sub_width, half == 0 ? u0 : u_mid, half == 0 ? u_mid : u1, depth - 1, ends, s);
@@ -470,7 +542,8 @@ void distance_recursive(const Vec3f cp[4], const float width[4], float u0, float
 // Where the end is out of the footprint's reach, the footprint is wholly on one side of the
 // end's line for a straight strand anyway, so skipping the fall-off there changes nothing.
 inline bool end_within_reach(const Vec3f& end, float half_width, const DistanceState& s) {
-  return hypot2(end.x, end.y) <= half_width + s.reach_over_depths(end.z - half_width, end.z + half_width);
+  const float near = half_width + s.motion;
+  return hypot2(end.x, end.y) <= near + s.reach_over_depths(end.z - near, end.z + near);
 }
 
 
@@ -489,10 +562,14 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Ray& 
                                     compute_mask);
 }
 
-bool intersect_segment_distance(const CurveSet& set, size_t segment, const DistanceRay& ray, CoverageModel model,
-                                SegmentEnds ends, CurveFragmentHit& hit, bool compute_mask) {
-  if (!ray.valid) return false;
-  const Vec3f* cp = set.control_points(segment);
+namespace {
+
+// The segment of shape `cp` (world space); with `from` and `to`, moving linearly from `from` to
+// `to` during the interval the ray sweeps, `cp` being its shape half-way, never farther than
+// `motion` from it.
+bool intersect_shape(const CurveSet& set, size_t segment, const Vec3f* cp, const Vec3f* from, const Vec3f* to,
+                     float motion, float time_from, float time_to, const DistanceRay& ray, CoverageModel model,
+                     SegmentEnds ends, CurveFragmentHit& hit, bool compute_mask) {
   const float* width = set.widths(segment);
   float hw = half_max_width(width);
   if (!(hw > 0.0f)) return false;
@@ -507,11 +584,11 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   // Depth rejection first (cheapest): the hull's depth range against the ray's interval.
   float z_hi = std::max(std::max(z[0], z[1]), std::max(z[2], z[3]));
   float z_lo = std::min(std::min(z[0], z[1]), std::min(z[2], z[3]));
-  const float t_far = std::max(0.0f, (z_hi + hw) / ray.ray_length);
+  const float t_far = std::max(0.0f, (z_hi + hw + motion) / ray.ray_length);
   const float reach_far = ray.reach.grows()
                               ? ray.reach.at(t_far)
-                              : ray.reach.max_over(std::max(0.0f, (z_lo - hw) / ray.ray_length), t_far);
-  const float margin = hw + reach_far;
+                              : ray.reach.max_over(std::max(0.0f, (z_lo - hw - motion) / ray.ray_length), t_far);
+  const float margin = hw + motion + reach_far;
   if (z_hi + margin < ray.depth_min || z_lo - margin > ray.t_max * ray.ray_length) return false;
   // Turn the frame in its plane so that x runs along the projected chord: the hull is then thin
   // in y and its bound tight (Nakamaru & Ohno's frame). A chord seen end-on keeps the frame.
@@ -554,6 +631,24 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   s.dir = ray.dir;
   s.reach = ray.reach;
   s.reach_grows = ray.reach.grows();
+  MovingKeys keys;
+  if (from && to) {
+    // The interval's ends in the turned frame; the shape half-way is ray_cp.
+    auto to_frame = [&](const Vec3f& p) {
+      const Vec3f rel = p - ray.origin;
+      return Vec3f{dot(rel, s.frame_x), dot(rel, s.frame_y), dot(rel, ray.dir)};
+    };
+    for (int i = 0; i < 4; ++i) {
+      keys.from[size_t(i)] = to_frame(from[i]);
+      keys.to[size_t(i)] = to_frame(to[i]);
+      s.mid_cp[i] = ray_cp[i];
+    }
+    s.motion = motion;
+    s.keys = &keys;
+    s.time_from = time_from;
+    s.time_to = time_to;
+    s.ends_shutter = time_to >= 1.0f;
+  }
 
   EndFalloff fall;
   float min_tangent = kEndOnTangentFraction * 2.0f * hw;
@@ -581,7 +676,7 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   // Stubs are segments seen nearly end-on: short on the screen against their width and against
   // their own length (a thumbnail's segments are short on the screen too, seen side-on, and the
   // band describes them; measuring them all made 32x24 renders 3-5 times slower).
-  if (ends.cut_joints && !s.oriented && chord_2d < kStubChordFraction * 2.0f * hw &&
+  if (ends.cut_joints && !s.oriented && !s.keys && chord_2d < kStubChordFraction * 2.0f * hw &&
       chord_2d < kStubForeshortening * length(chord) && !s.footprint_at(s.t).binary) {
     hit.t = s.t;
     hit.u = s.u;
@@ -589,6 +684,7 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
     return stub_coverage(ray_cp, width, s, compute_mask, hit);
   }
   hit.t = s.t;
+  hit.time = s.time;
   // The best leaf within the end lines, plus what the leaves cover past them.
   hit.coverage = std::min(
       1.0f, std::max(s.coverage, s.best_within_ends + float(mask_count(s.beyond_ends)) / float(kMaskSide * kMaskSide)));
@@ -603,6 +699,53 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
     const CoverageMask started = s.cut_points != 0 ? s.cut_points : hit.mask & s.cut.mask();
     if (started != 0) hit.mask = started;
   }
+  return true;
+}
+
+}  // namespace
+
+bool intersect_segment_distance(const CurveSet& set, size_t segment, const DistanceRay& ray, CoverageModel model,
+                                SegmentEnds ends, CurveFragmentHit& hit, bool compute_mask) {
+  if (!ray.valid) return false;
+  if (!ray.sweeps_shutter || !set.moving(segment)) {
+    Vec3f at_time[4];
+    const Vec3f* cp = set.control_points_at(segment, ray.time, at_time);
+    return intersect_shape(set, segment, cp, nullptr, nullptr, 0.0f, 0.0f, 1.0f, ray, model, ends, hit, compute_mask);
+  }
+  // A ray sweeping the shutter: each interval between the segment's keys (along which its points
+  // move linearly) in closed form, weighted by its share of the shutter. The best interval gives
+  // the depth and shading parameter, the masks add up.
+  const SegmentMotion& m = set.motions[set.motion[segment]];
+  const float* times = set.motion_times.data() + m.times;
+  const Vec3f* key_cp = set.motion_cp.data() + m.points;
+  float total = 0, best = -1;
+  CoverageMask mask = 0;
+  for (uint32_t k = 0; k + 1 < m.keys; ++k) {
+    const float span = times[k + 1] - times[k];
+    if (!(span > 0.0f)) continue;
+    const Vec3f* from = key_cp + k * kControlPointsPerSegment;
+    const Vec3f* to = from + kControlPointsPerSegment;
+    Vec3f middle[4];
+    float motion = 0.0f;
+    for (size_t j = 0; j < kControlPointsPerSegment; ++j) {
+      middle[j] = lerp(0.5f, from[j], to[j]);
+      motion = std::max(motion, 0.5f * length(to[j] - from[j]));
+    }
+    motion *= 1.0f + 1e-5f;  // the rounding of the middle
+    CurveFragmentHit h;
+    if (!intersect_shape(set, segment, middle, from, to, motion, times[k], times[k + 1], ray, model, ends, h,
+                         compute_mask))
+      continue;
+    total += span * h.coverage;
+    mask |= h.mask;
+    if (span * h.coverage > best) {
+      best = span * h.coverage;
+      hit = h;
+    }
+  }
+  if (!(total > 0.0f)) return false;
+  hit.coverage = std::min(1.0f, total);
+  hit.mask = compute_mask ? mask : kFullMask;
   return true;
 }
 

@@ -21,6 +21,9 @@ struct CurveFragmentHit {
   float u = 0;         // along the segment
   float distance = 0;  // from the ray to the strand axis, across the ray
   CoverageMask mask = kFullMask;  // where in the footprint the strand lies (when asked for)
+  // A moving strand seen by a ray sweeping the shutter: the shutter time at which it is shaded
+  // (when it passes the footprint's centre); -1: the ray's time.
+  float time = -1;
 };
 
 // Which ends of a segment are ends of its strand: strand ends get a coverage fall-off along the

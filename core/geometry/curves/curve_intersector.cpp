@@ -148,7 +148,8 @@ Vec3f world_normal(const TraversalState& s, const Vec3f& tangent) {
 }  // namespace
 
 bool intersect_segment(const CurveSet& set, size_t segment, const Ray& ray, CurveHit& hit) {
-  const Vec3f* cp = set.control_points(segment);
+  Vec3f at_time[4];
+  const Vec3f* cp = set.control_points_at(segment, ray.time, at_time);
   const float* width = set.widths(segment);
   float margin = cull_margin(width);
   if (!(margin > 0.0f)) return false;  // hidden everywhere

@@ -19,6 +19,20 @@
 
 namespace darc {
 
+// The motion record of a segment that does not move.
+inline constexpr uint32_t kStaticSegment = std::numeric_limits<uint32_t>::max();
+
+// How a moving segment's keys are stored (CurveSet::motions): its key times start at
+// motion_times[times], its control points at motion_cp[points] (4 per key).
+struct SegmentMotion {
+  uint32_t times = 0;
+  uint32_t keys = 0;
+  uint32_t points = 0;
+};
+
+// The most keys a moving segment has: a motion block's 64 times, and shutter open and close.
+inline constexpr size_t kMaxCurveMotionKeys = 66;
+
 // A strand id no strand has (surfaces, or "skip no strand").
 inline constexpr uint32_t kNoStrand = std::numeric_limits<uint32_t>::max();
 
@@ -51,6 +65,15 @@ struct CurveSet {
   std::vector<uint8_t> flags;          // SegmentFlag bits
   std::vector<uint32_t> strand_id;     // unique per curve in the scene
   std::vector<uint32_t> attribute_id;  // the attribute state (material) the segment was made with
+  // Motion blur: segments that move during the shutter keep their control points at each of their
+  // key times (shutter-normalised: 0 at open, 1 at close; the first key at 0, the last at 1) and
+  // move linearly between keys; `cp` holds their points at shutter open. Widths, normals and
+  // colours do not move. `motion` is empty while no segment moves, else per segment an index
+  // into `motions` or kStaticSegment. Key times are shared by the segments of one request.
+  std::vector<uint32_t> motion;
+  std::vector<SegmentMotion> motions;
+  std::vector<float> motion_times;
+  std::vector<Vec3f> motion_cp;
 
   size_t size() const { return strand_id.size(); }
   // Bounds of the control-point hull grown by half the largest |width| coefficient (the Bézier
@@ -64,6 +87,11 @@ struct CurveSet {
   bool oriented(size_t i) const { return (flags[i] & kSegmentOriented) != 0; }
   // The unit normal at end k (0: u = 0, 1: u = 1) of an oriented segment.
   Vec3f end_normal(size_t i, int k) const { return normal[i * kNormalsPerSegment + size_t(k)]; }
+  bool moving(size_t i) const { return !motion.empty() && motion[i] != kStaticSegment; }
+  bool has_motion() const { return !motions.empty(); }
+  // The control points at shutter time `time` in [0, 1]: `cp`'s for a segment that does not
+  // move, else interpolated into `scratch`.
+  const Vec3f* control_points_at(size_t i, float time, Vec3f scratch[4]) const;
   bool strand_start(size_t i) const { return (flags[i] & kSegmentStrandStart) != 0; }
   bool strand_end(size_t i) const { return (flags[i] & kSegmentStrandEnd) != 0; }
 
@@ -75,6 +103,10 @@ struct CurveSet {
   // `attribute` and its strand ids moved up by `strand_offset`: the same arrays as building
   // them here (colours are shared with the previous segment's entry when equal, as add_segment does).
   void append(const CurveSet& other, uint32_t attribute, uint32_t strand_offset);
+  // Makes segments [first, size()) move: `keys[k]` holds the same segments (same count and order,
+  // from the same request) at shutter time times[k]; times increase from 0 to 1. The points at
+  // time 0 must be those already in `cp`. Segments whose keys are all equal stay static.
+  void add_motion(size_t first, const std::vector<float>& times, const std::vector<const CurveSet*>& keys);
   // Sets the strand-start and strand-end flags of segments [first, size()) from their strand ids:
   // a strand's first and last segments, unless the strand is closed (its first point is its last).
   void mark_strand_ends(size_t first);

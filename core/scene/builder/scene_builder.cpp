@@ -68,6 +68,7 @@ void SceneBuilder::frame_begin(int number, const SourceLoc& loc) {
   saved_options_.push_back(options_);
   saved_attributes_.push_back(attributes_);
   saved_ctm_.push_back(ctm_);
+  saved_ctm_keys_.push_back(ctm_keys_);
   in_frame_ = true;
   frame_number_ = number;
   has_frame_number_ = true;
@@ -82,6 +83,8 @@ void SceneBuilder::frame_end(const SourceLoc& loc) {
   saved_attributes_.pop_back();
   ctm_ = saved_ctm_.back();
   saved_ctm_.pop_back();
+  ctm_keys_ = std::move(saved_ctm_keys_.back());
+  saved_ctm_keys_.pop_back();
   in_frame_ = false;
   frame_skipped_ = false;
   has_frame_number_ = false;
@@ -101,6 +104,7 @@ void SceneBuilder::world_begin(const SourceLoc& loc) {
   saved_attributes_.push_back(attributes_);
   world_attribute_depth_ = saved_attributes_.size();
   saved_ctm_.push_back(ctm_);
+  saved_ctm_keys_.push_back(ctm_keys_);
   in_world_ = true;
   start_scene(loc);
 }
@@ -159,7 +163,11 @@ void SceneBuilder::start_scene(const SourceLoc& loc) {
     light_handles_[pl.handle] = idx;
     attributes_.lights_on.push_back(idx);
   }
-  ctm_ = Matrix4{};
+  if (!ctm_keys_.empty())
+    diag_.warning_once("camera motion", loc, "WorldBegin",
+                       "a moving camera (a motion block before WorldBegin) is not supported: the camera at shutter "
+                       "open is used");
+  set_ctm(Matrix4{});
   next_strand_id_ = 0;
 }
 
@@ -180,6 +188,10 @@ void SceneBuilder::close_blocks_left_open_in_world(const SourceLoc& loc) {
 }
 
 void SceneBuilder::world_end(const SourceLoc& loc) {
+  if (motion_) {
+    diag_.error(motion_->loc, "MotionBegin", "block is never closed (no MotionEnd before WorldEnd): its samples are dropped");
+    motion_.reset();
+  }
   close_blocks_left_open_in_world(loc);
   check_frame_memory_at_world_end(loc);
   pop_block(Block::World, "WorldEnd", loc);
@@ -187,6 +199,8 @@ void SceneBuilder::world_end(const SourceLoc& loc) {
   saved_attributes_.pop_back();
   ctm_ = saved_ctm_.back();
   saved_ctm_.pop_back();
+  ctm_keys_ = std::move(saved_ctm_keys_.back());
+  saved_ctm_keys_.pop_back();
   in_world_ = false;
   objects_.clear();
   std::unique_ptr<Scene> scene = std::move(scene_);
@@ -214,6 +228,7 @@ void SceneBuilder::attribute_begin(const SourceLoc& loc) {
   push_block(Block::Attribute, loc);
   saved_attributes_.push_back(attributes_);
   saved_ctm_.push_back(ctm_);
+  saved_ctm_keys_.push_back(ctm_keys_);
 }
 
 void SceneBuilder::attribute_end(const SourceLoc& loc) {
@@ -224,6 +239,8 @@ void SceneBuilder::attribute_end(const SourceLoc& loc) {
   while (!scoped_spaces_.empty() && scoped_spaces_.back().depth > saved_attributes_.size()) scoped_spaces_.pop_back();
   ctm_ = saved_ctm_.back();
   saved_ctm_.pop_back();
+  ctm_keys_ = std::move(saved_ctm_keys_.back());
+  saved_ctm_keys_.pop_back();
 }
 
 // Resource blocks scope Resource requests, which darc does not support: nothing to do.
@@ -234,6 +251,7 @@ void SceneBuilder::transform_begin(const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.transform_begin(loc); })) return;
   push_block(Block::Transform, loc);
   saved_ctm_.push_back(ctm_);
+  saved_ctm_keys_.push_back(ctm_keys_);
 }
 
 void SceneBuilder::transform_end(const SourceLoc& loc) {
@@ -241,63 +259,82 @@ void SceneBuilder::transform_end(const SourceLoc& loc) {
   pop_block(Block::Transform, "TransformEnd", loc);
   ctm_ = saved_ctm_.back();
   saved_ctm_.pop_back();
+  ctm_keys_ = std::move(saved_ctm_keys_.back());
+  saved_ctm_keys_.pop_back();
 }
 
 // ---------------------------------------------------------------- transforms
 
-void SceneBuilder::set_ctm(const Matrix4& m) { ctm_ = m; }
+void SceneBuilder::set_ctm(const Matrix4& m) {
+  ctm_ = m;
+  ctm_keys_.clear();
+}
+
 void SceneBuilder::concat(const Matrix4& m) {
   // Each factor is finite (the lexer refuses anything else), but repeated large ones can overflow
   // the product: every point would then be infinite or NaN.
-  const Matrix4 product = m * ctm_;
-  for (const auto& row : product.m)
-    for (double v : row)
-      if (!std::isfinite(v)) throw RibError("the current transform would overflow (an entry beyond the double range)");
+  auto checked = [](const Matrix4& product) {
+    for (const auto& row : product.m)
+      for (double v : row)
+        if (!std::isfinite(v)) throw RibError("the current transform would overflow (an entry beyond the double range)");
+    return product;
+  };
+  const Matrix4 product = checked(m * ctm_);
+  std::vector<TransformKey> keys = ctm_keys_;
+  for (TransformKey& k : keys) k.m = checked(m * k.m);
   ctm_ = product;
+  ctm_keys_ = std::move(keys);
 }
 
 void SceneBuilder::identity(const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.identity(loc); })) return;
   // Inside the world block, Identity means world space (Aqsis, PRMan).
+  if (transform_sample("Identity", Matrix4{}, true, loc)) return;
   set_ctm(Matrix4{});
 }
 
 void SceneBuilder::transform(const std::array<double, 16>& m, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.transform(m, loc); })) return;
-  if (skip_motion_sample()) return;
-  set_ctm(Matrix4::from_row_major(m.data()));
+  const Matrix4 matrix = Matrix4::from_row_major(m.data());
+  if (transform_sample("Transform", matrix, true, loc)) return;
+  set_ctm(matrix);
 }
 
 void SceneBuilder::concat_transform(const std::array<double, 16>& m, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.concat_transform(m, loc); })) return;
-  if (skip_motion_sample()) return;
-  concat(Matrix4::from_row_major(m.data()));
+  const Matrix4 matrix = Matrix4::from_row_major(m.data());
+  if (transform_sample("ConcatTransform", matrix, false, loc)) return;
+  concat(matrix);
 }
 
 void SceneBuilder::translate(double dx, double dy, double dz, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.translate(dx, dy, dz, loc); })) return;
-  if (skip_motion_sample()) return;
-  concat(Matrix4::translate({dx, dy, dz}));
+  const Matrix4 matrix = Matrix4::translate({dx, dy, dz});
+  if (transform_sample("Translate", matrix, false, loc)) return;
+  concat(matrix);
 }
 
 void SceneBuilder::rotate(double angle, double ax, double ay, double az, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.rotate(angle, ax, ay, az, loc); })) return;
-  if (skip_motion_sample()) return;
   if (ax == 0 && ay == 0 && az == 0) throw RibError("Rotate axis is the zero vector");
-  concat(Matrix4::rotate(angle, {ax, ay, az}));
+  const Matrix4 matrix = Matrix4::rotate(angle, {ax, ay, az});
+  if (transform_sample("Rotate", matrix, false, loc)) return;
+  concat(matrix);
 }
 
 void SceneBuilder::scale(double sx, double sy, double sz, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.scale(sx, sy, sz, loc); })) return;
-  if (skip_motion_sample()) return;
-  concat(Matrix4::scale({sx, sy, sz}));
+  const Matrix4 matrix = Matrix4::scale({sx, sy, sz});
+  if (transform_sample("Scale", matrix, false, loc)) return;
+  concat(matrix);
 }
 
 void SceneBuilder::perspective(double fov, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.perspective(fov, loc); })) return;
-  if (skip_motion_sample()) return;
   if (!(fov > 0 && fov < 180)) throw RibError("Perspective fov must be in (0, 180)");
-  concat(Matrix4::perspective(fov));
+  const Matrix4 matrix = Matrix4::perspective(fov);
+  if (transform_sample("Perspective", matrix, false, loc)) return;
+  concat(matrix);
 }
 
 void SceneBuilder::coordinate_system(const std::string& name, const SourceLoc& loc) {

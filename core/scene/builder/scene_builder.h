@@ -8,6 +8,7 @@
 #include "core/scene/scene.h"
 #include "core/geometry/surfaces/dicing_view.h"
 #include "core/geometry/surfaces/triangle_mesh_data.h"
+#include "core/math/transform_interpolation.h"
 #include "parser/diagnostics.h"
 #include "parser/ri_target.h"
 
@@ -178,8 +179,33 @@ class SceneBuilder : public RiTarget {
   // At WorldEnd (scene_builder_renderable.cpp): one warning when the frame has nothing that can
   // show up in its image, with the reason.
   void warn_if_nothing_renderable(const Scene& scene, const SourceLoc& loc);
-  // Inside MotionBegin/MotionEnd only the first sample (the shutter-open one) is applied.
-  bool skip_motion_sample();
+  // Motion blocks (scene_builder_motion.cpp). Requests that cannot move (every primitive but
+  // Curves): inside a block, only the first sample is applied (true: skip this one).
+  bool skip_motion_sample(const std::string& request);
+  // A transform request inside a motion block: recorded as a sample (true), applied at MotionEnd.
+  // `absolute`: it replaces the current transform (Transform, Identity) instead of concatenating.
+  bool transform_sample(const char* request, const Matrix4& m, bool absolute, const SourceLoc& loc);
+  // A sample of a motion block: counted, and checked to be the block's request (false, reported,
+  // when it is not: the block then keeps its first sample).
+  bool count_motion_sample(const std::string& request, const SourceLoc& loc);
+  struct MotionBlock;
+  void end_transform_motion(const MotionBlock& block);
+  void end_curves_motion(const MotionBlock& block);
+  // Whether the shutter is open for a while (Shutter open < close): then things move.
+  bool motion_blur() const { return options_.output.shutter_close > options_.output.shutter_open; }
+  // The current transform at RIB time t.
+  Matrix4 ctm_at(double t) const { return ctm_keys_.empty() ? ctm_ : transform_at(ctm_keys_, t); }
+  // One Curves call's shape at its motion samples: RIB time and its "P" (or "Pw").
+  struct PositionSample {
+    double time;
+    std::vector<float> P;
+  };
+  // Key times with more keys where the moving transform turns the points P (object space).
+  std::vector<double> refine_turning_keys(const std::vector<double>& times, const std::vector<float>& P) const;
+  // Curves with its positions at motion samples (empty: the call's own "P", not moving unless the
+  // transform moves).
+  void build_curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
+                    const ParamList& params, const std::vector<PositionSample>& samples, const SourceLoc& loc);
   // When recording an ObjectBegin block, stores the call and returns true.
   bool record(std::function<void(SceneBuilder&)> call);
 
@@ -193,6 +219,11 @@ class SceneBuilder : public RiTarget {
   std::vector<Attributes> saved_attributes_;
   Matrix4 ctm_;  // before WorldBegin: current -> camera; inside: current -> world
   std::vector<Matrix4> saved_ctm_;
+  // The current transform over RIB time while it moves (a motion block around a transform, or
+  // one of the enclosing scope's), sorted by time; empty: ctm_ at every time. ctm_ is then the
+  // transform at shutter open, which everything that does not move uses.
+  std::vector<TransformKey> ctm_keys_;
+  std::vector<std::vector<TransformKey>> saved_ctm_keys_;
   std::vector<Block> blocks_;
   std::vector<SourceLoc> block_locs_;
 
@@ -271,8 +302,24 @@ class SceneBuilder : public RiTarget {
   std::map<std::string, std::vector<std::function<void(SceneBuilder&)>>> objects_;
   std::vector<std::function<void(SceneBuilder&)>>* recording_ = nullptr;
   bool replaying_ = false;
-  bool in_motion_ = false;
-  int motion_samples_seen_ = 0;
+  // The open MotionBegin block: its times, the request its samples are, and what they hold.
+  struct MotionBlock {
+    std::vector<double> times;
+    SourceLoc loc;
+    std::string request;  // the first sample's request
+    int samples = 0;
+    bool failed = false;  // reported: the block keeps its first sample
+    std::vector<Matrix4> matrices;  // transform samples
+    bool absolute = false;
+    struct CurvesSample {
+      std::string type, wrap;
+      std::vector<int> nvertices;
+      ParamList params;
+      SourceLoc loc;
+    };
+    std::vector<CurvesSample> curves;  // Curves samples
+  };
+  std::optional<MotionBlock> motion_;
 };
 
 }  // namespace darc

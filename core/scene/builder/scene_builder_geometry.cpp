@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 
@@ -213,7 +214,62 @@ void report_curve_clamps(const CurveClamps& c, const CurvesInput& in, Diagnostic
 void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
                           const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.curves(type, nvertices, wrap, params, loc); })) return;
-  if (skip_motion_sample()) return;
+  if (motion_) {
+    // A sample of a motion block: built at MotionEnd with the others (end_curves_motion).
+    if (count_motion_sample("Curves", loc)) motion_->curves.push_back({type, wrap, nvertices, params, loc});
+    return;
+  }
+  build_curves(type, nvertices, wrap, params, {}, loc);
+}
+
+// Points move linearly between keys, but a turning transform moves them along arcs: between
+// keys whose transforms turn the object, more keys, until the middle of every interval is within
+// kArcTolerance of the object's size of where the transform puts it (the sagitta R(1 - cos(a/2))
+// of a turn by a: about 7 degrees per interval).
+std::vector<double> SceneBuilder::refine_turning_keys(const std::vector<double>& times,
+                                                      const std::vector<float>& P) const {
+  constexpr double kArcTolerance = 2e-3;
+  constexpr int kMaxSplits = 6;  // 64 intervals between two keys at most
+  if (P.size() < 3) return times;
+  Vec3d lo{P[0], P[1], P[2]}, hi = lo;
+  for (size_t i = 0; i + 2 < P.size(); i += 3) {
+    const Vec3d p{P[i], P[i + 1], P[i + 2]};
+    lo = min(lo, p);
+    hi = max(hi, p);
+  }
+  std::vector<Vec3d> corners;
+  for (int c = 0; c < 8; ++c) corners.push_back({c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z});
+  auto deviation = [&](double a, double b, double& size) {
+    const Matrix4 ma = ctm_at(a), mb = ctm_at(b), mm = ctm_at(0.5 * (a + b));
+    double worst = 0;
+    Vec3d wlo = ma.transform_point(corners[0]), whi = wlo;
+    for (const Vec3d& c : corners) {
+      const Vec3d pa = ma.transform_point(c), pb = mb.transform_point(c);
+      wlo = min(wlo, pa);
+      whi = max(whi, pa);
+      worst = std::max(worst, length(mm.transform_point(c) - (pa + pb) * 0.5));
+    }
+    size = length(whi - wlo);
+    return worst;
+  };
+  std::vector<double> out{times.front()};
+  std::function<void(double, double, int)> split = [&](double a, double b, int depth) {
+    double size = 0;
+    const double d = deviation(a, b, size);
+    if (depth < kMaxSplits && d > kArcTolerance * size && out.size() + 2 < kMaxCurveMotionKeys) {
+      split(a, 0.5 * (a + b), depth + 1);
+      split(0.5 * (a + b), b, depth + 1);
+    } else {
+      out.push_back(b);
+    }
+  };
+  for (size_t k = 1; k < times.size(); ++k) split(times[k - 1], times[k], 0);
+  return out;
+}
+
+void SceneBuilder::build_curves(const std::string& type, const std::vector<int>& nvertices, const std::string& wrap,
+                                const ParamList& params, const std::vector<PositionSample>& samples,
+                                const SourceLoc& loc) {
   if (!building_geometry("Curves", loc)) return;
   if (type != "linear" && type != "cubic")
     throw RibError("curve type must be \"linear\" or \"cubic\", found \"" + type + "\"");
@@ -221,7 +277,9 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
     throw RibError("wrap must be \"periodic\" or \"nonperiodic\", found \"" + wrap + "\"");
   // A Curves call replayed from a cached archive with the transform, basis and colours of the
   // last time it was built: its segments are copied (bitwise the same as building them again).
-  const uint64_t id = replayed_id();
+  // Moving curves (motion samples of their own, or a moving transform) are built anew each time.
+  const bool moves = motion_blur() && (samples.size() > 1 || !ctm_keys_.empty());
+  const uint64_t id = moves ? 0 : replayed_id();
   note_geometry(id);
   if (id != 0) {
     auto it = curve_chunks_.find(id);
@@ -243,6 +301,21 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
   in.nvertices = nvertices;
   in.basis = attributes_.vbasis;
   in.P = read_points(params, "Curves");
+  // Samples of a motion block: the shape at shutter open (at times outside the samples', the
+  // nearest sample's).
+  auto positions_at = [&](double t) {
+    if (samples.empty()) return in.P;
+    size_t k = 1;
+    while (k < samples.size() && samples[k].time < t) ++k;
+    if (k == samples.size() || t <= samples.front().time) return t <= samples.front().time ? samples.front().P : samples.back().P;
+    const PositionSample &a = samples[k - 1], &b = samples[k];
+    const float s = float((t - a.time) / (b.time - a.time));
+    std::vector<float> P(a.P.size());
+    for (size_t i = 0; i < P.size(); ++i) P[i] = (1 - s) * a.P[i] + s * b.P[i];
+    return P;
+  };
+  const double open = options_.output.shutter_open, close = options_.output.shutter_close;
+  if (!samples.empty()) in.P = positions_at(open);
   in.p_components = 3;
   in.width = primvar(params, "width", 1);
   if (const Param* cw = params.find("constantwidth")) {
@@ -270,7 +343,46 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
   clamps.constant_width = in.constantwidth.value_or(0);
   if (clamps.constant_width < 0) in.constantwidth = 0.0f;
   uint32_t material = make_material(loc);
-  if (id == 0) {
+  if (moves) {
+    // Keys at shutter open and close and at every sample or transform key between.
+    std::vector<double> times{open, close};
+    for (const PositionSample& p : samples)
+      if (p.time > open && p.time < close) times.push_back(p.time);
+    for (const TransformKey& k : ctm_keys_)
+      if (k.time > open && k.time < close) times.push_back(k.time);
+    times = merge_times(times, {});
+    if (!ctm_keys_.empty()) times = refine_turning_keys(times, in.P);
+    std::vector<CurveSet> keys(times.size());
+    std::vector<float> key_times(times.size());
+    uint32_t strands = 0;
+    for (size_t k = 0; k < times.size(); ++k) {
+      CurvesInput at = in;
+      if (k > 0) at.P = positions_at(times[k]);
+      at.object_to_world = ctm_at(times[k]);
+      uint32_t key_strands = 0;
+      const CurvesAppended appended = append_curves(keys[k], at, material, key_strands);
+      if (k == 0) {
+        clamps.appended = appended;
+        strands = key_strands;
+      } else if (keys[k].size() != keys[0].size()) {
+        // Segments whose points all coincide are dropped: a shape that collapses at one key.
+        diag_.error(loc, "Curves",
+                    fmt::format("its motion samples give {} and {} segments (points that coincide at one time): "
+                                "built at shutter open without motion blur",
+                                keys[0].size(), keys[k].size()));
+        keys.resize(1);
+        break;
+      }
+      key_times[k] = float((times[k] - open) / (close - open));
+    }
+    if (keys.size() > 1) {
+      std::vector<const CurveSet*> key_sets;
+      for (const CurveSet& k : keys) key_sets.push_back(&k);
+      keys[0].add_motion(0, key_times, key_sets);
+    }
+    scene_->curves.append(keys[0], material, next_strand_id_);
+    next_strand_id_ += strands;
+  } else if (id == 0) {
     clamps.appended = append_curves(scene_->curves, in, material, next_strand_id_);
   } else {
     CurveChunk chunk{ctm_, attributes_.vbasis, attributes_.color, attributes_.opacity, CurveSet{}, 0, true};
@@ -286,7 +398,7 @@ void SceneBuilder::curves(const std::string& type, const std::vector<int>& nvert
 
 void SceneBuilder::polygon(const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.polygon(params, loc); })) return;
-  if (skip_motion_sample()) return;
+  if (skip_motion_sample("Polygon")) return;
   std::vector<float> P = read_points(params, "Polygon");
   if (P.size() < 9) throw RibError("a polygon needs at least 3 vertices, found " + std::to_string(P.size() / 3));
   std::vector<int> indices(P.size() / 3);
@@ -297,7 +409,7 @@ void SceneBuilder::polygon(const ParamList& params, const SourceLoc& loc) {
 void SceneBuilder::general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params,
                                    const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.general_polygon(nverts_per_loop, params, loc); })) return;
-  if (skip_motion_sample()) return;
+  if (skip_motion_sample("GeneralPolygon")) return;
   size_t total = 0;
   for (int n : nverts_per_loop) {
     if (n < 3) throw RibError("each loop needs at least 3 vertices, found " + std::to_string(n));
@@ -319,7 +431,7 @@ void SceneBuilder::general_polygon(const std::vector<int>& nverts_per_loop, cons
 void SceneBuilder::points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,
                                    const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.points_polygons(nverts_per_face, indices, params, loc); })) return;
-  if (skip_motion_sample()) return;
+  if (skip_motion_sample("PointsPolygons")) return;
   std::vector<int> loops(nverts_per_face.size(), 1);
   add_polygons(loops, nverts_per_face, indices, params, "PointsPolygons", loc);
 }
@@ -329,7 +441,7 @@ void SceneBuilder::points_general_polygons(const std::vector<int>& nloops_per_fa
                                            const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.points_general_polygons(nloops_per_face, nverts_per_loop, indices, params, loc); }))
     return;
-  if (skip_motion_sample()) return;
+  if (skip_motion_sample("PointsGeneralPolygons")) return;
   add_polygons(nloops_per_face, nverts_per_loop, indices, params, "PointsGeneralPolygons", loc);
 }
 
@@ -369,6 +481,43 @@ void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const s
     s.layer = material;
     scene_->surfaces.polygons.push_back(std::move(s));
     scene_->surfaces.polygon_material.push_back(material);
+  }
+}
+
+}  // namespace darc
+
+namespace darc {
+
+// A motion block of Curves (scene_builder_motion.cpp checks the block itself): the samples must
+// be one shape at each time, of which only the positions move.
+void SceneBuilder::end_curves_motion(const MotionBlock& block) {
+  const auto& first = block.curves.front();
+  std::vector<PositionSample> samples;
+  for (size_t k = 0; k < block.curves.size(); ++k) {
+    const auto& c = block.curves[k];
+    if (c.type != first.type || c.wrap != first.wrap || c.nvertices != first.nvertices) {
+      diag_.error(c.loc, "Curves",
+                  fmt::format("motion sample {} is not the same curves as the first (type, wrap and vertex counts "
+                              "must agree): the first sample is built without motion blur",
+                              k + 1));
+      samples.clear();
+      break;
+    }
+    samples.push_back({block.times[k], read_points(c.params, "Curves")});
+    if (samples.back().P.size() != samples.front().P.size()) {
+      diag_.error(c.loc, "Curves",
+                  fmt::format("motion sample {} has {} points where the first has {}: the first sample is built "
+                              "without motion blur",
+                              k + 1, samples.back().P.size() / 3, samples.front().P.size() / 3));
+      samples.clear();
+      break;
+    }
+  }
+  // Without samples (a mismatch), the first sample alone. Its errors are the Curves request's.
+  try {
+    build_curves(first.type, first.nvertices, first.wrap, first.params, samples, first.loc);
+  } catch (const RibError& e) {
+    diag_.error(first.loc, "Curves", e.what());
   }
 }
 

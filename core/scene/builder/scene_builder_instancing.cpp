@@ -1,13 +1,11 @@
 // SceneBuilder's instancing: ObjectBegin/ObjectEnd record the requests of an object, and
-// ObjectInstance replays them with the current attributes and transform; MotionBegin blocks keep
-// only their first sample (the graphics state itself lives in scene_builder.cpp).
+// ObjectInstance replays them with the current attributes and transform (the graphics state
+// itself lives in scene_builder.cpp).
 #include "core/scene/builder/scene_builder.h"
 
 #include <algorithm>
 
 namespace darc {
-
-bool SceneBuilder::skip_motion_sample() { return in_motion_ && motion_samples_seen_++ > 0; }
 
 bool SceneBuilder::record(std::function<void(SceneBuilder&)> call) {
   if (!recording_) return false;
@@ -36,6 +34,7 @@ void SceneBuilder::object_instance(const std::string& handle, const SourceLoc& l
   // The object's requests run in their own attribute scope, with the current attributes.
   Attributes saved_attr = attributes_;
   Matrix4 saved_ctm = ctm_;
+  std::vector<TransformKey> saved_ctm_keys = ctm_keys_;
   const size_t depth = blocks_.size(), saved_attr_depth = saved_attributes_.size(), saved_ctm_depth = saved_ctm_.size();
   // A recorded request with an error is reported at the instance and skipped, like any other
   // request; the object's other requests still build.
@@ -52,8 +51,10 @@ void SceneBuilder::object_instance(const std::string& handle, const SourceLoc& l
   block_locs_.resize(blocks_.size());
   saved_attributes_.resize(std::min(saved_attributes_.size(), saved_attr_depth));
   saved_ctm_.resize(std::min(saved_ctm_.size(), saved_ctm_depth));
+  saved_ctm_keys_.resize(saved_ctm_.size());
   attributes_ = saved_attr;
   ctm_ = saved_ctm;
+  ctm_keys_ = std::move(saved_ctm_keys);
 }
 
 }  // namespace darc

@@ -107,7 +107,7 @@ void SceneBuilder::projection(const std::string& name, const ParamList& params, 
     options_.projection = Camera::Projection::Orthographic;
   }
   // RI: the current transform becomes the screen transform and is reset (camera space starts here).
-  ctm_ = Matrix4{};
+  set_ctm(Matrix4{});
 }
 
 void SceneBuilder::clipping(double n, double f, const SourceLoc& loc) {
@@ -225,15 +225,9 @@ void SceneBuilder::hider(const std::string& type, const ParamList&, const Source
 void SceneBuilder::ignored_request(const std::string& request, const std::vector<double>& numbers,
                                    const std::vector<std::string>&, const SourceLoc& loc) {
   // ErrorHandler: the parser has applied it to the Diagnostics.
-  static const char* silent[] = {"Shutter", "ShadingRate", "ShadingInterpolation", "Bound", "ErrorHandler",
+  static const char* silent[] = {"ShadingRate", "ShadingInterpolation", "Bound", "ErrorHandler",
                                  "ArchiveRecord", "Displacement", "RelativeDetail", "Detail", "DetailRange",
                                  "ColorSamples", "PixelVariance", "GeometricApproximation"};
-  if (request == "MotionBegin" || request == "MotionEnd") {
-    diag_.warning_once("motion", loc, request, "motion blur is not supported: the first motion sample is used");
-    in_motion_ = request == "MotionBegin";
-    motion_samples_seen_ = 0;
-    return;
-  }
   if (request == "Matte") {
     if (!numbers.empty() && numbers[0] != 0)
       diag_.warning_once("matte", loc, "Matte", "holdout objects (Matte 1) are not supported: drawn as ordinary objects");

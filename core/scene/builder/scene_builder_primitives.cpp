@@ -50,7 +50,7 @@ void SceneBuilder::primitive(const PrimitiveRequest& request, const ParamList& p
     return;
   }
   if (record([=](SceneBuilder& b) { b.primitive(request, params, loc); })) return;
-  if (skip_motion_sample()) return;
+  if (skip_motion_sample(request.name)) return;
   if (!building_geometry(request.name.c_str(), loc)) return;
   note_geometry(replayed_id());
   (this->*builder)(request, params, loc);

@@ -17,7 +17,7 @@ struct NumberCount {
   size_t count;
 };
 constexpr NumberCount kCounts[] = {
-    {"Shutter", 2},     {"ShadingRate", 1}, {"RelativeDetail", 1}, {"PixelVariance", 1}, {"GeometricApproximation", 1},
+    {"ShadingRate", 1}, {"RelativeDetail", 1}, {"PixelVariance", 1}, {"GeometricApproximation", 1},
     {"DetailRange", 4}, {"Bound", 6},       {"Detail", 6}};
 
 // ColorSamples' two matrices when they change nothing: 3 samples, RGB to RGB and back.
@@ -70,9 +70,7 @@ void check_unused_request_values(const std::string& request, const std::vector<d
       return;
     }
   }
-  if (request == "Shutter") {
-    w.expect(n[0] <= n[1], fmt::format("close time {} is before the open time {}", n[1], n[0]));
-  } else if (request == "ShadingRate") {
+  if (request == "ShadingRate") {
     w.expect(n[0] > 0, fmt::format("size {} must be positive", n[0]));
   } else if (request == "RelativeDetail" || request == "PixelVariance" || request == "GeometricApproximation") {
     w.expect(n[0] >= 0, fmt::format("value {} must not be negative", n[0]));

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <cmath>
 
 namespace darc {
@@ -100,6 +102,38 @@ TEST(CoverageMask, SpreadPutsTheExcessOnTheNeighboursOnly) {
   // An empty mask says nowhere in particular: the coverage is spread over the whole footprint.
   EXPECT_NEAR(spread_coverage(0, 0.25f).at(17), 0.25f, 1e-7f);
   EXPECT_NEAR(spread_total(spread_coverage(kFullMask, 1.0f)), 1.0f, 1e-7f);
+}
+
+TEST(CoverageMask, MaskPointTimesAreStratifiedInEveryRowAndColumn) {
+  std::set<int> all;
+  for (int line = 0; line < kMaskSide; ++line) {
+    std::set<int> row_eighths, column_eighths;
+    for (int k = 0; k < kMaskSide; ++k) {
+      row_eighths.insert(int(mask_point_time(line * kMaskSide + k) * kMaskSide));
+      column_eighths.insert(int(mask_point_time(k * kMaskSide + line) * kMaskSide));
+    }
+    EXPECT_EQ(row_eighths.size(), size_t(kMaskSide)) << "row " << line;
+    EXPECT_EQ(column_eighths.size(), size_t(kMaskSide)) << "column " << line;
+  }
+  for (int b = 0; b < kMaskSide * kMaskSide; ++b) all.insert(int(mask_point_time(b) * 64));
+  EXPECT_EQ(all.size(), 64u) << "one time per point";
+}
+
+TEST(CoverageMask, ASweptLineTakesThePointsItPassesAtTheirTimes) {
+  // A vertical line moving across a unit square from x = -1 to x = +1 during the shutter: at the
+  // time of each point it takes, it is within half a column of it.
+  const FootprintSquare sq{1, 0, 0, 1};
+  const SweptLine sweep{0, 1, -1, 1, true};
+  const CoverageMask m = nearest_points_mask(sq, 0, 0, 1, 0, false, 8, kFullMask, &sweep);
+  EXPECT_EQ(mask_count(m), 8);
+  for (int b = 0; b < 64; ++b)
+    if ((m >> b) & 1) {
+      const float x = (float(b % kMaskSide) + 0.5f) / kMaskSide - 0.5f;
+      EXPECT_NEAR(x, -1 + 2 * mask_point_time(b), 1.0 / kMaskSide) << b;
+    }
+  // Two lines a third of a square apart take different points.
+  const SweptLine later{0, 1, -1.33f, 0.67f, true};
+  EXPECT_EQ(m & nearest_points_mask(sq, 0, 0, 1, 0, false, 8, kFullMask, &later), 0u);
 }
 
 }  // namespace

@@ -52,6 +52,8 @@ float param(const ParamList& params, const char* name) {
 }
 
 constexpr float kFloatMax = std::numeric_limits<float>::max();
+// The name build() gives its text in messages.
+const std::string kRibName = "test.rib";
 const std::string kLine3 = "Curves \"linear\" [3] \"nonperiodic\" \"P\" [0 0 0  1 0 0  2 0 0]";
 
 std::vector<Row> option_rows() {
@@ -98,6 +100,9 @@ std::vector<Row> option_rows() {
        [](const Scene& s) { EXPECT_EQ(s.camera.near_clip, 1e-10); }},
       {"clipping-far", before_world("Clipping 5 5"), error(1, "Clipping", "near 5 and far 5: needs 0 < near < far"),
        [](const Scene& s) { EXPECT_EQ(s.camera.far_clip, 1e38); }},
+      {"shutter", before_world("Shutter 1 0"),
+       error(1, "Shutter", "close time 0 is before the open time 1: the shutter is left as it was"),
+       [](const Scene& s) { EXPECT_EQ(s.output.shutter_close, 0.0); }},
       {"dof-fstop", before_world("DepthOfField 0 0.5 4"),
        error(1, "DepthOfField", "fstop 0, focal length 0.5 and focal distance 4 must be positive"),
        [](const Scene& s) { EXPECT_FALSE(s.camera.has_lens()) << "the request is skipped: a pinhole"; }},
@@ -154,8 +159,6 @@ std::vector<Row> unused_request_rows() {
   const auto nothing = [](const Scene&) {};
   const std::string unused = " (RI Spec 3.2); darc does not use it";
   return {
-      {"shutter", before_world("Shutter 1 0"), warning(1, "Shutter", "close time 0 is before the open time 1" + unused),
-       nothing},
       {"shadingrate", in_world("ShadingRate 0"), warning(2, "ShadingRate", "size 0 must be positive" + unused),
        nothing},
       {"relativedetail", before_world("RelativeDetail -1"),
@@ -175,9 +178,6 @@ std::vector<Row> unused_request_rows() {
        warning(1, "ColorSamples", "N = 1 samples per colour is not supported: colours stay RGB"), nothing},
       {"matte", in_world("Matte 5"),
        warning(2, "Matte", "holdout objects (Matte 1) are not supported: drawn as ordinary objects"), nothing},
-      {"motion-times", in_world("MotionBegin [1 0]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd"),
-       warning(2, "MotionBegin", "motion blur is not supported: the first motion sample is used"),
-       [](const Scene& s) { EXPECT_EQ(s.surfaces.spheres.size(), 1u); }},
       {"unsupported-numbers", in_world("TextureCoordinates -1 0 0 0 0 1 1 1"),
        warning(2, "TextureCoordinates", "not supported by darc: ignored"), nothing},
   };
@@ -204,6 +204,47 @@ std::vector<Row> transform_rows() {
        }},
       {"perspective-fov", in_world("Perspective 0"), error(2, "Perspective", "Perspective fov must be in (0, 180)"),
        [](const Scene&) {}},
+      {"motion-times", in_world("MotionBegin [1 0]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd"),
+       error(2, "MotionBegin", "times must increase, found [1 0]: the block keeps its first sample"),
+       [](const Scene& s) { EXPECT_EQ(s.surfaces.spheres.size(), 1u); }},
+      {"motion-count", "Shutter 0 1\n" + in_world("MotionBegin [0 0.5 1]\nTranslate 1 0 0\nTranslate 2 0 0\nMotionEnd\n" + kLine3),
+       error(6, "MotionEnd", "the block at " + kRibName + ":3:1 has 3 times but 2 requests: it keeps its first sample"),
+       [](const Scene& s) {
+         EXPECT_FALSE(s.curves.has_motion());
+         EXPECT_FLOAT_EQ(s.curves.cp[0].x, 1.0f) << "the first sample";
+       }},
+      {"motion-mixed", "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nTranslate 1 0 0\nRotate 90 0 0 1\nMotionEnd\n" + kLine3),
+       error(5, "Rotate",
+             "a motion block holds one kind of request: Rotate after Translate (block at " + kRibName +
+                 ":3:1); the block keeps its first sample"),
+       [](const Scene& s) {
+         EXPECT_FALSE(s.curves.has_motion());
+         EXPECT_FLOAT_EQ(s.curves.cp[0].x, 1.0f) << "the first sample";
+       }},
+      {"motion-nested", in_world("MotionBegin [0 1]\nMotionBegin [0 1]\nMotionEnd"),
+       error(3, "MotionBegin", "MotionBegin inside the motion block opened at " + kRibName + ":2:1"),
+       [](const Scene&) {}},
+      {"motion-curves-topology",
+       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\n" + kLine3 +
+                                  "\nCurves \"linear\" [2] \"nonperiodic\" \"P\" [0 0 0  1 0 0]\nMotionEnd"),
+       error(5, "Curves",
+             "motion sample 2 is not the same curves as the first (type, wrap and vertex counts must agree): the first "
+             "sample is built without motion blur"),
+       [](const Scene& s) {
+         EXPECT_EQ(s.curves.size(), 2u);
+         EXPECT_FALSE(s.curves.has_motion());
+       }},
+      {"motion-unsupported", "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd"),
+       warning(3, "MotionBegin",
+               "motion blur of Sphere is not supported (Curves and transforms move): its first motion sample is used"),
+       [](const Scene& s) { EXPECT_EQ(s.surfaces.spheres.size(), 1u); }},
+      {"motion-blur", "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nTranslate 0 0 0\nTranslate 0 2 0\nMotionEnd\n" + kLine3),
+       std::nullopt,
+       [](const Scene& s) {
+         ASSERT_TRUE(s.curves.moving(0));
+         Vec3f at[4];
+         EXPECT_FLOAT_EQ(s.curves.control_points_at(0, 0.5f, at)[0].y, 1.0f) << "half-way at mid-shutter";
+       }},
       {"camera-singular", before_world("Scale 0 0 0"),
        warning(2, "WorldBegin", "the camera transform is singular: the identity is used instead"),
        [](const Scene& s) { EXPECT_EQ(s.camera.world_to_camera, Matrix4{}); }},

@@ -1,0 +1,151 @@
+// SceneBuilder's motion blur requests: Shutter, and MotionBegin/MotionEnd blocks around a
+// transform (the current transform then moves: ctm_keys_) or around Curves (deformation: the
+// samples' positions, built in scene_builder_geometry.cpp). Other primitives in a block keep their
+// first sample, with one warning; a block that breaks the rules (times that do not increase, a
+// count of samples other than the times', two kinds of request) is an error (RI RIE_BADMOTION)
+// and keeps its first sample.
+#include "core/scene/builder/scene_builder.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace darc {
+
+namespace {
+
+// At most this many times in a block (RenderPipe's cap; Embree's is 129): more is surely an error.
+constexpr size_t kMaxMotionTimes = 64;
+
+std::string format_times(const std::vector<double>& times) {
+  std::string s = "[";
+  for (size_t i = 0; i < times.size(); ++i) {
+    if (i > 0) s += ' ';
+    s += fmt::format("{}", times[i]);
+  }
+  return s + "]";
+}
+
+}  // namespace
+
+void SceneBuilder::shutter(double open, double close, const SourceLoc& loc) {
+  if (!option_allowed("Shutter", loc)) return;
+  if (!(close >= open))
+    throw RibError(fmt::format("close time {} is before the open time {}: the shutter is left as it was", close, open));
+  options_.output.shutter_open = open;
+  options_.output.shutter_close = close;
+}
+
+void SceneBuilder::motion_begin(const std::vector<double>& times, const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.motion_begin(times, loc); })) return;
+  if (motion_) throw RibError("MotionBegin inside the motion block opened at " + motion_->loc.str());
+  MotionBlock block;
+  block.times = times;
+  block.loc = loc;
+  if (times.empty() || times.size() > kMaxMotionTimes) {
+    diag_.error(loc, "MotionBegin",
+                fmt::format("takes 1 to {} times, found {}: the block keeps its first sample", kMaxMotionTimes,
+                            times.size()));
+    block.failed = true;
+  } else if (std::adjacent_find(times.begin(), times.end(), std::greater_equal<double>()) != times.end()) {
+    diag_.error(loc, "MotionBegin",
+                fmt::format("times must increase, found {}: the block keeps its first sample", format_times(times)));
+    block.failed = true;
+  }
+  motion_ = std::move(block);
+}
+
+bool SceneBuilder::count_motion_sample(const std::string& request, const SourceLoc& loc) {
+  MotionBlock& block = *motion_;
+  if (block.samples == 0) block.request = request;
+  ++block.samples;
+  if (block.failed) return block.samples == 1;
+  if (request != block.request) {
+    diag_.error(loc, request,
+                fmt::format("a motion block holds one kind of request: {} after {} (block at {}); the block keeps "
+                            "its first sample",
+                            request, block.request, block.loc.str()));
+    block.failed = true;
+    return false;
+  }
+  return true;
+}
+
+bool SceneBuilder::skip_motion_sample(const std::string& request) {
+  if (!motion_) return false;
+  const SourceLoc loc = motion_->loc;
+  if (!count_motion_sample(request, loc)) return true;
+  if (motion_->samples == 1 && motion_blur())
+    diag_.warning_once("motion:" + request, loc, "MotionBegin",
+                       fmt::format("motion blur of {} is not supported (Curves and transforms move): its first "
+                                   "motion sample is used",
+                                   request));
+  return motion_->samples > 1;
+}
+
+bool SceneBuilder::transform_sample(const char* request, const Matrix4& m, bool absolute, const SourceLoc& loc) {
+  if (!motion_) return false;
+  if (count_motion_sample(request, loc)) {
+    motion_->matrices.push_back(m);
+    motion_->absolute = absolute;
+  }
+  return true;
+}
+
+void SceneBuilder::motion_end(const SourceLoc& loc) {
+  if (record([=](SceneBuilder& b) { b.motion_end(loc); })) return;
+  if (!motion_) throw RibError("MotionEnd without MotionBegin");
+  MotionBlock block = std::move(*motion_);
+  motion_.reset();
+  // A block of requests that do not move at all (Color, Surface: shading blur) is applied as
+  // given; only the requests that move are counted.
+  if (!block.failed && block.samples > 0 && block.samples != int(block.times.size())) {
+    diag_.error(loc, "MotionEnd",
+                fmt::format("the block at {} has {} times but {} requests: it keeps its first sample",
+                            block.loc.str(), block.times.size(), block.samples));
+    block.failed = true;
+  }
+  if (block.failed) {
+    // The first sample alone, as a renderer without motion blur would.
+    block.times.resize(1, 0.0);
+    block.matrices.resize(std::min<size_t>(block.matrices.size(), 1));
+    block.curves.resize(std::min<size_t>(block.curves.size(), 1));
+  }
+  if (!block.matrices.empty()) end_transform_motion(block);
+  if (!block.curves.empty()) end_curves_motion(block);
+}
+
+// The transform moves: at each time of the block or of the transform it is given in, the
+// sample at that time (interpolated, held outside the block's times) after the transform then.
+void SceneBuilder::end_transform_motion(const MotionBlock& block) {
+  std::vector<TransformKey> samples;
+  for (size_t k = 0; k < block.matrices.size(); ++k) samples.push_back({block.times[k], block.matrices[k]});
+  if (!motion_blur() || samples.size() == 1) {
+    // Nothing moves: the transform at shutter open.
+    const Matrix4 m = transform_at(samples, options_.output.shutter_open);
+    if (block.absolute) {
+      set_ctm(m);
+    } else {
+      concat(m);
+    }
+    return;
+  }
+  std::vector<double> times = block.times;
+  for (const TransformKey& k : ctm_keys_) times.push_back(k.time);
+  times = merge_times(times, {});
+  std::vector<TransformKey> keys;
+  for (double t : times) {
+    const Matrix4 local = transform_at(samples, t);
+    const Matrix4 m = block.absolute ? local : local * ctm_at(t);
+    for (const auto& row : m.m)
+      for (double v : row)
+        if (!std::isfinite(v))
+          throw RibError("the current transform would overflow (an entry beyond the double range)");
+    keys.push_back({t, m});
+  }
+  ctm_keys_ = std::move(keys);
+  ctm_ = transform_at(ctm_keys_, options_.output.shutter_open);
+}
+
+}  // namespace darc
