@@ -16,6 +16,7 @@ namespace darc {
 
 namespace {
 
+
 // Footprints never shrink below this fraction of the scene's size (r -> 0 at a pinhole's apex,
 // curve-ray-tracing.md §6 case 11).
 constexpr float kMinFootprintSceneFraction = 1e-7f;
@@ -422,6 +423,8 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
     Ray ray{at.P, l, s.ray_offset, distance};
     ray.time = at.time;
     ray.sweeps_shutter = at.sweeps_shutter;
+    ray.sweep_from = at.sweep_from;
+    ray.sweep_to = at.sweep_to;
     // The receiving patch at most kShadowPatchElongation times the incoming footprint's width
     // at P.
     const float max_extent =
@@ -480,6 +483,8 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
     Ray ray{patch.P, dir, s.ray_offset, to_light};
     ray.time = at.time;
     ray.sweeps_shutter = at.sweeps_shutter;
+    ray.sweep_from = at.sweep_from;
+    ray.sweep_to = at.sweep_to;
     return trace_footprint_transmittance(ctx_, ray, footprint, counters_,
                                          scratch_.at(size_t(path.depth) + 1), filter,
                                          stopping_transmittance(s, path.weight, kDistanceMinTransmittance),
@@ -597,25 +602,45 @@ void render_tile_distance(const DistanceContext& ctx, const PixelRect& rect, Til
   const Camera& cam = ctx.base.scene.camera;
   RayScratchStack scratch(ctx.base.scene.accel);
   double spacing = 1.0 / std::max(nx, ny);
-  // Motion blur: every ray stands for the whole shutter (moving strands give their coverage
-  // averaged over it) and sees the scene at mid-shutter for depth and shading.
+  // Motion blur: each ray is traced once per stretch of the shutter (time_strata of them), each
+  // sweep averaging moving strands' coverage over its stretch and seeing the scene at the
+  // stretch's middle for depth and shading. Every ray covers the whole shutter: handing the
+  // stretches out among a pixel's rays instead (each ray's area seeing only its own quarter of the
+  // shutter at 2x2) made 2x2 worse than 1x1 on the swinging tuft (RMSE 0.0051 against 0.0022).
   const bool moves = ctx.base.scene.curves.has_motion();
+  const int per_sample = moves ? std::max(1, ctx.settings.time_strata) : 1;
+  const float strata = float(per_sample);
   for (int py = rect.y0; py < rect.y1; ++py)
-    for (int px = rect.x0; px < rect.x1; ++px)
+    for (int px = rect.x0; px < rect.x1; ++px) {
       for (int sy = 0; sy < ny; ++sy)
         for (int sx = 0; sx < nx; ++sx) {
           // Stratum centres: the footprint, not jitter, does the antialiasing.
           double x = px + (sx + 0.5) / nx, y = py + (sy + 0.5) / ny;
-          Ray ray = cam.generate_ray(x, y);
-          if (moves) {
-            ray.time = 0.5f;
-            ray.sweeps_shutter = true;
+          const Ray centre = cam.generate_ray(x, y);
+          RayFootprint fp = camera_footprint(cam, x, y, spacing, centre, ctx.min_radius);
+          Vec3f color{};
+          float alpha = 0, depth = std::numeric_limits<float>::infinity();
+          for (int k = 0; k < per_sample; ++k) {
+            Ray ray = centre;
+            if (moves) {
+              ray.sweeps_shutter = true;
+              ray.sweep_from = float(k) / strata;
+              ray.sweep_to = float(k + 1) / strata;
+              ray.time = 0.5f * (ray.sweep_from + ray.sweep_to);
+            }
+            ++counters.primary_rays;
+            const SampleValue v = trace_distance_ray(ctx, ray, fp, counters, scratch);
+            color += v.color;
+            alpha += v.alpha;
+            depth = std::min(depth, v.depth);
           }
-          RayFootprint fp = camera_footprint(cam, x, y, spacing, ray, ctx.min_radius);
-          ++counters.primary_rays;
-          SampleValue v = trace_distance_ray(ctx, ray, fp, counters, scratch);
-          acc.add_sample(float(x), float(y), {v.color.x, v.color.y, v.color.z, v.alpha}, v.depth);
+          if (per_sample > 1) {
+            color = color / float(per_sample);
+            alpha /= float(per_sample);
+          }
+          acc.add_sample(float(x), float(y), {color.x, color.y, color.z, alpha}, depth);
         }
+    }
 }
 
 }  // namespace darc

@@ -38,6 +38,12 @@ struct DistanceHiderSettings {
   // Composite with 8x8 coverage masks (where each strand lies in the footprint) instead of
   // scalar coverage alone: removes the uncorrelated-overlap bias (docs/performance.md).
   bool coverage_masks = true;
+  // Motion blur: every ray is traced once per stretch of the shutter, this many equal stretches,
+  // and averaged. Strands that pass in front of one another during the shutter are composited in
+  // their order at each stretch's middle, and coverages of one stretch as if independent in time:
+  // on the swinging tuft (bench, --size blur) one stretch gave RMSE 0.0046, two 0.0030, four
+  // 0.0022 (the reference's own noise about 0.0015).
+  int time_strata = 4;
 };
 
 // Per-frame data the distance hider needs besides the HiderContext.

@@ -155,6 +155,8 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
     Ray r{at.P, dir, settings.ray_offset};
     r.time = at.time;
     r.sweeps_shutter = at.sweeps_shutter;
+    r.sweep_from = at.sweep_from;
+    r.sweep_to = at.sweep_to;
     // What the ray sees if it leaves the scene: the domes that light this point, along it.
     Vec3f beyond{};
     for (const Light* light : shading.lights(at.material)) beyond += light->environment(dir);

@@ -30,6 +30,8 @@ DistanceRay make_distance_ray(const Ray& ray, const RayFootprint& footprint) {
   r.t_max = ray.tmax;
   r.time = ray.time;
   r.sweeps_shutter = ray.sweeps_shutter;
+  r.sweep_from = ray.sweep_from;
+  r.sweep_to = ray.sweep_to;
   r.reach = footprint.reach_bound();
   r.footprint = &footprint;
   r.depth_min = r.t_min * r.ray_length;

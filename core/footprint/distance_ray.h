@@ -19,7 +19,8 @@ struct DistanceRay {
   float ray_length = 1;    // |ray.d|: t = depth / ray_length
   float t_min = 0, t_max = 0;
   float time = 0;               // Ray::time
-  bool sweeps_shutter = false;  // Ray::sweeps_shutter
+  bool sweeps_shutter = false;  // Ray::sweeps_shutter, over [sweep_from, sweep_to]
+  float sweep_from = 0, sweep_to = 1;
   ReachBound reach;        // the footprint's reach at ray parameter t (RayFootprint::reach_bound)
   const RayFootprint* footprint = nullptr;
   // A footprint whose sub-rays start on a plane and all leave it to one side (a shadow ray's

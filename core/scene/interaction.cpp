@@ -91,6 +91,8 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
   it.t = t;
   it.time = ray.time;
   it.sweeps_shutter = ray.sweeps_shutter;
+  it.sweep_from = ray.sweep_from;
+  it.sweep_to = ray.sweep_to;
   it.u = u;
   it.P = ray.at(t);
   uint32_t local;

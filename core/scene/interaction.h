@@ -24,6 +24,7 @@ struct Interaction {
   // point (shadows, reflections) see the scene as it did.
   float time = 0;
   bool sweeps_shutter = false;
+  float sweep_from = 0, sweep_to = 1;
   float u = 0;  // along a curve segment; surface parameters where the surface has them
   float v = 0;
   Vec3f P;

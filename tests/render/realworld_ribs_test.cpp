@@ -258,12 +258,22 @@ TEST(RealworldRibs, DeformationShowsEveryPrimitiveKind) {
       << "every primitive is drawn: " << f.run.err;
   const Pixels& img = *f.image;
   // Subdivision surface, sphere, cylinder, cone, hyperboloid, paraboloid, disk, polygons: each
-  // its own region in a grid; and the four Points, a few pixels each.
-  const std::vector<int> big = regions(img, lit, 200);
-  EXPECT_GE(big.size(), 4u) << "(the two spheres touch, and so do the hyperboloid and the paraboloid; the blurred "
-                               "curves reach the disk and the polygons)";
-  const std::vector<int> all = regions(img, lit, 3);
-  EXPECT_GE(all.size(), big.size() + 4) << "the four points";
+  // drawn at its place in the grid's top two rows; and the four Points, a few pixels each, in the
+  // bottom row on the left (the blurred curves are to their right).
+  const int centres[8][2] = {{75, 65}, {130, 58}, {185, 65}, {250, 70}, {85, 118}, {130, 112}, {175, 120}, {233, 120}};
+  for (const auto& c : centres) {
+    int on = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        on += lit(img.at(c[0] + dx, c[1] + dy, 0), img.at(c[0] + dx, c[1] + dy, 1), img.at(c[0] + dx, c[1] + dy, 2));
+    EXPECT_EQ(on, 9) << "a shape at " << c[0] << ", " << c[1];
+  }
+  Pixels left = img;
+  for (int y = 0; y < left.height; ++y)
+    for (int x = 0; x < left.width; ++x)
+      if (y < 140 || x >= 110)
+        for (int c = 0; c < left.channels; ++c) left.v[(size_t(y) * left.width + x) * left.channels + c] = 0;
+  EXPECT_EQ(regions(left, lit, 3).size(), 4u) << "the four points";
   // Under the disk, the linear curve turns about its right end through a quarter turn and the
   // cubic one bends down: a fan of partial coverage (sharp curves would cover some 300 pixels).
   int partial = 0;

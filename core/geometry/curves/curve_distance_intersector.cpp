@@ -91,7 +91,8 @@ struct DistanceState {
   // leaf's band (swept_band_coverage).
   float motion = 0;
   const MovingKeys* keys = nullptr;
-  float time_from = 0, time_to = 1;  // the interval of the shutter the keys span
+  float time_from = 0, time_to = 1;  // the keys' interval, in the ray's stretch's time (masks)
+  float shutter_from = 0, shutter_to = 1;  // the same in shutter time (shading)
   bool ends_shutter = false;         // the last interval (its mask points' times include 1)
   float time = -1;                   // the best leaf's: when it passes the centre (-1: the ray's)
   Vec3f mid_cp[4];  // the segment half-way through the interval, in this frame
@@ -356,7 +357,7 @@ void distance_leaf(const Vec3f cp[4], const float width[4], float u0, float u1, 
     sweep = {s.time_from, s.time_to, d0 - d_mid, d1 - d_mid, s.ends_shutter};
     // Shaded as it is when it passes the footprint's centre (nearest it, if it does not).
     const float cross = d0 == d1 ? 0.5f : std::clamp(d0 / (d0 - d1), 0.0f, 1.0f);
-    leaf_time = s.time_from + (s.time_to - s.time_from) * cross;
+    leaf_time = s.shutter_from + (s.shutter_to - s.shutter_from) * cross;
   } else {
     coverage = end_on ? end_on_coverage(s, f, pc.x, pc.y, half_width) : band_coverage(s, f, d, half_width, tx, ty);
   }
@@ -567,9 +568,12 @@ namespace {
 // The segment of shape `cp` (world space); with `from` and `to`, moving linearly from `from` to
 // `to` during the interval the ray sweeps, `cp` being its shape half-way, never farther than
 // `motion` from it.
+// [time_from, time_to] is the motion's part of the ray's stretch of the shutter, in the stretch's
+// own time (0 to 1: the mask points' times); [shutter_from, shutter_to] the same in shutter time.
 bool intersect_shape(const CurveSet& set, size_t segment, const Vec3f* cp, const Vec3f* from, const Vec3f* to,
-                     float motion, float time_from, float time_to, const DistanceRay& ray, CoverageModel model,
-                     SegmentEnds ends, CurveFragmentHit& hit, bool compute_mask) {
+                     float motion, float time_from, float time_to, float shutter_from, float shutter_to,
+                     const DistanceRay& ray, CoverageModel model, SegmentEnds ends, CurveFragmentHit& hit,
+                     bool compute_mask) {
   const float* width = set.widths(segment);
   float hw = half_max_width(width);
   if (!(hw > 0.0f)) return false;
@@ -647,6 +651,8 @@ bool intersect_shape(const CurveSet& set, size_t segment, const Vec3f* cp, const
     s.keys = &keys;
     s.time_from = time_from;
     s.time_to = time_to;
+    s.shutter_from = shutter_from;
+    s.shutter_to = shutter_to;
     s.ends_shutter = time_to >= 1.0f;
   }
 
@@ -710,36 +716,51 @@ bool intersect_segment_distance(const CurveSet& set, size_t segment, const Dista
   if (!ray.sweeps_shutter || !set.moving(segment)) {
     Vec3f at_time[4];
     const Vec3f* cp = set.control_points_at(segment, ray.time, at_time);
-    return intersect_shape(set, segment, cp, nullptr, nullptr, 0.0f, 0.0f, 1.0f, ray, model, ends, hit, compute_mask);
+    return intersect_shape(set, segment, cp, nullptr, nullptr, 0.0f, 0.0f, 1.0f, 0.0f, 1.0f, ray, model, ends, hit,
+                           compute_mask);
   }
-  // A ray sweeping the shutter: each interval between the segment's keys (along which its points
-  // move linearly) in closed form, weighted by its share of the shutter. The best interval gives
-  // the depth and shading parameter, the masks add up.
+  // A ray sweeping a stretch [a, b] of the shutter: each part of it between the segment's keys
+  // (along which its points move linearly) in closed form, weighted by its share of the stretch.
+  // The best part gives the depth and shading parameter, the masks add up (their points' times
+  // are those of the stretch, mask_point_time scaled to it).
   const SegmentMotion& m = set.motions[set.motion[segment]];
   const float* times = set.motion_times.data() + m.times;
   const Vec3f* key_cp = set.motion_cp.data() + m.points;
+  const float a = ray.sweep_from, b = ray.sweep_to, length_ab = b - a;
+  if (!(length_ab > 0.0f)) {
+    Vec3f at_time[4];
+    const Vec3f* cp = set.control_points_at(segment, ray.time, at_time);
+    return intersect_shape(set, segment, cp, nullptr, nullptr, 0.0f, 0.0f, 1.0f, 0.0f, 1.0f, ray, model, ends, hit,
+                           compute_mask);
+  }
   float total = 0, best = -1;
   CoverageMask mask = 0;
   for (uint32_t k = 0; k + 1 < m.keys; ++k) {
+    const float lo = std::max(a, times[k]), hi = std::min(b, times[k + 1]);
+    if (!(hi > lo)) continue;
     const float span = times[k + 1] - times[k];
-    if (!(span > 0.0f)) continue;
-    const Vec3f* from = key_cp + k * kControlPointsPerSegment;
-    const Vec3f* to = from + kControlPointsPerSegment;
-    Vec3f middle[4];
+    const Vec3f* key_from = key_cp + k * kControlPointsPerSegment;
+    const Vec3f* key_to = key_from + kControlPointsPerSegment;
+    // The segment at the part's ends and half-way.
+    Vec3f from[4], to[4], middle[4];
+    const float s_lo = (lo - times[k]) / span, s_hi = (hi - times[k]) / span;
     float motion = 0.0f;
     for (size_t j = 0; j < kControlPointsPerSegment; ++j) {
+      from[j] = s_lo == 0.0f ? key_from[j] : lerp(s_lo, key_from[j], key_to[j]);
+      to[j] = s_hi == 1.0f ? key_to[j] : lerp(s_hi, key_from[j], key_to[j]);
       middle[j] = lerp(0.5f, from[j], to[j]);
       motion = std::max(motion, 0.5f * length(to[j] - from[j]));
     }
     motion *= 1.0f + 1e-5f;  // the rounding of the middle
+    const float share = (hi - lo) / length_ab;
     CurveFragmentHit h;
-    if (!intersect_shape(set, segment, middle, from, to, motion, times[k], times[k + 1], ray, model, ends, h,
-                         compute_mask))
+    if (!intersect_shape(set, segment, middle, from, to, motion, (lo - a) / length_ab, (hi - a) / length_ab, lo, hi,
+                         ray, model, ends, h, compute_mask))
       continue;
-    total += span * h.coverage;
+    total += share * h.coverage;
     mask |= h.mask;
-    if (span * h.coverage > best) {
-      best = span * h.coverage;
+    if (share * h.coverage > best) {
+      best = share * h.coverage;
       hit = h;
     }
   }
