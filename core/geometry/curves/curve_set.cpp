@@ -48,7 +48,6 @@ void CurveSet::add_motion(size_t first, const std::vector<float>& times, const s
       for (size_t j = 0; j < kControlPointsPerSegment; ++j)
         moves = moves || !(key->control_points(local)[j] == control_points(i)[j]);
     if (!moves) continue;
-    if (motion.empty()) motion.assign(n, kStaticSegment);
     motion.resize(n, kStaticSegment);
     if (!times_used) {
       motion_times.insert(motion_times.end(), times.begin(), times.end());
