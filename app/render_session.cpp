@@ -1,109 +1,34 @@
 #include "app/render_session.h"
 
-#include "app/disk_reserve.h"
 #include "app/frame_count.h"
+#include "app/frame_session.h"
 #include "app/memory_limit.h"
 #include "app/process_memory.h"
-
 #include "app/progress_reporter.h"
-#include "app/stats_file.h"
-#include "core/scene/acceleration_reuse.h"
 #include "core/scene/frame_memory.h"
 #include "core/scene/builder/scene_builder.h"
 #include "integrator/color_config.h"
-#include "integrator/image_writer.h"
-#include "integrator/render_frame.h"
 #include "parser/rib_parser.h"
 #include "parser/rib_writer.h"
 
-#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <set>
 
 namespace darc {
 
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-// --skip-existing: a frame counts as done when its file exists, its header opens and it records
-// no errors (a frame rendered without some of its requests is rendered again).
-enum class ExistingFrame { Missing, Done, HasErrors };
-
-ExistingFrame existing_frame(const std::string& path) {
-  if (!fs::exists(path)) return ExistingFrame::Missing;
-  const std::optional<std::int64_t> errors = read_recorded_error_count(path);
-  if (!errors) return ExistingFrame::Missing;  // unreadable: render it again
-  return *errors > 0 ? ExistingFrame::HasErrors : ExistingFrame::Done;
-}
 
 // The caps on printed messages (message_budget.h) are summed up once, after everything else.
 void print_suppression_summary(const Diagnostics& diag) {
   for (const std::string& line : diag.suppression_summary()) std::fprintf(stderr, "darc: %s\n", line.c_str());
-}
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-bool has_image_extension(const std::string& name) {
-  std::string ext = fs::path(name).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".png" || ext == ".jpg" || ext == ".jpeg";
-}
-
-// The file a frame goes to: -o or the Display name, with the frame number substituted, and an
-// extension chosen from the display type when the name has none we can write.
-std::string output_path(const AppOptions& o, const OutputSettings& out) {
-  std::string name = o.output.empty() ? out.display_name : o.output;
-  name = substitute_frame_number(name, out.frame_number);
-  if (!has_image_extension(name))
-    name += (out.display_type == "openexr" || out.display_type == "exr") ? ".exr" : ".tif";
-  return name;
-}
-
-// Per kind of secondary ray (shadow, reflection, refraction): traced and pruned.
-nlohmann::json by_kind(const RayCounters& c) {
-  nlohmann::json j = nlohmann::json::object();
-  for (int k = 0; k < kSecondaryKinds; ++k)
-    j[to_string(SecondaryKind(k))] = {{"traced", c.traced_by_kind[k]}, {"pruned", c.pruned_by_kind[k]}};
-  return j;
-}
-
-nlohmann::json counters_json(const RayCounters& c) {
-  return {{"primary_rays", c.primary_rays},
-          {"secondary_rays", c.secondary_rays},
-          {"curve_segment_tests", c.segment_tests},
-          {"surface_tests", c.surface_tests},
-          {"surface_pieces", c.surface_pieces},
-          {"shadow_segment_tests", c.shadow_segment_tests},
-          {"shadow_surface_pieces", c.shadow_surface_pieces},
-          {"fragment_merges", c.fragment_merges},
-          {"point_tests", c.point_tests},
-          {"grid_cells_visited", c.cells_visited},  // grid cells or BVH nodes: the accelerator's steps
-          {"rays_terminated_early", c.rays_terminated_early},
-          {"fragments", c.fragments},
-          {"peak_abuffer_length", c.peak_fragments},
-          {"rays_pruned_by_contribution", c.pruned_rays},
-          {"secondary_by_kind", by_kind(c)}};
-}
-
-// Where the scene's memory goes: the curve segments, the acceleration structure, and the
-// process's peak resident size so far (parsing, building and rendering included).
-nlohmann::json memory_json(const Scene& scene) {
-  const size_t segments = scene.curves.size();
-  const size_t curve_bytes = scene.curves.memory_bytes(), accel_bytes = scene.accel.memory_bytes();
-  return {{"curve_bytes", curve_bytes},
-          {"accelerator_bytes", accel_bytes},
-          {"bytes_per_segment", segments ? double(curve_bytes + accel_bytes) / double(segments) : 0.0},
-          {"peak_resident_bytes", peak_resident_bytes()}};
 }
 
 // The memory the whole run may use: --memory-limit, else what Linux allows; nullopt for none.
@@ -165,31 +90,6 @@ void configure_procedurals(const AppOptions& o, RibParser& parser) {
   parser.set_run_program_limits(limits);
 }
 
-// "" when `image` may be written to `file` and leave the disk reserve free; else the error.
-std::string disk_reserve_refusal(const AppOptions& o, const std::string& file, const Image& image) {
-  if (o.disk_reserve_bytes && *o.disk_reserve_bytes == 0) return {};
-  const fs::path folder = fs::path(file).parent_path();
-  const std::optional<DiskSpace> space = disk_space(folder.empty() ? "." : folder.string());
-  if (!space) return {};  // no such folder: the write fails on its own
-  const uint64_t reserve = o.disk_reserve_bytes ? *o.disk_reserve_bytes : default_disk_reserve(*space);
-  const std::string source = o.disk_reserve_bytes
-                                 ? "--disk-reserve"
-                                 : "the default, 1 % of the file system up to 1 GB; --disk-reserve changes it";
-  const std::string shortfall = disk_reserve_shortfall(*space, image_file_bound(image.pixels.size()), reserve, source);
-  return shortfall.empty() ? shortfall : file + ": " + shortfall;
-}
-
-// write_image, unless the write would leave less than the disk reserve free (then nothing is
-// written).
-WriteResult write_within_reserve(const AppOptions& o, const std::string& file, const Image& image,
-                                 const ImageMetadata& meta, const ColorConfig& colors, const std::string& mode) {
-  WriteResult refused;
-  refused.error = disk_reserve_refusal(o, file, image);
-  if (refused.error.empty()) return write_image(file, image, meta, colors, mode);
-  refused.ok = false;
-  return refused;
-}
-
 }  // namespace
 
 int run_render_session(const AppOptions& o) {
@@ -231,123 +131,8 @@ int run_render_session(const AppOptions& o) {
   const ColorConfig& colors = *lookup.config;
   ProgressReporter progress(o.progress || !o.quiet, isatty(STDERR_FILENO) != 0);
   if (o.progress || !o.quiet) progress.set_frames_in_run(count_frames(o.inputs, o.frames, text_limit_bytes(o)).value_or(0));
-  nlohmann::json stats_frames = nlohmann::json::array();
-  // "--stats stats/f.####.json": each frame's entry goes to a file of its own as soon as the frame
-  // is written, so a sequence stopped part-way (a farm task cancelled) keeps the stats it made.
-  const bool stats_per_frame = has_frame_number_pattern(o.stats_path);
-  bool io_error = false;
-  std::set<std::string> written;
-  Clock::time_point segment_start = Clock::now();
-
-  AccelerationReuse acceleration;  // a frame with the previous one's geometry keeps its BVH
-  ArchiveCache archives;           // each archive parsed once for the run (--no-archive-cache: off)
-  auto run_stats = [&] {
-    return nlohmann::json{{"archive_cache",
-                           {{"enabled", o.archive_cache},
-                            {"archives_parsed", archives.parses()},
-                            {"archives_replayed", archives.replays()}}}};
-  };
-  SceneBuilder::Callbacks cb;
-  int frames_seen = 0;  // frames --frames selected (rendered, skipped as existing or failed)
-  if (o.frames)
-    cb.frame_selected = [&](int f) {
-      const bool selected = o.frames->contains(f);
-      if (selected) ++frames_seen;
-      return selected;
-    };
-  cb.frame_failed = [&](int) { segment_start = Clock::now(); };
-  cb.frame_ready = [&](Scene&& scene) {
-    FrameStats stats;
-    stats.parse_seconds = seconds_since(segment_start);
-    const std::string path = output_path(o, scene.output);
-    if (o.skip_existing) {
-      const ExistingFrame existing = existing_frame(path);
-      if (existing == ExistingFrame::Done) {
-        if (!o.quiet)
-          std::fprintf(stderr, "darc: %s exists: frame %d skipped\n", path.c_str(), scene.output.frame_number);
-        segment_start = Clock::now();
-        progress.skip_frame();
-        return;
-      }
-      if (existing == ExistingFrame::HasErrors && !o.quiet)
-        std::fprintf(stderr, "darc: %s exists but records errors: frame %d rendered again\n", path.c_str(),
-                     scene.output.frame_number);
-    }
-    if (written.count(path))
-      std::fprintf(stderr, "darc: warning: frame %d overwrites %s (use '#' or %%04d in the name)\n",
-                   scene.output.frame_number, path.c_str());
-    Clock::time_point t0 = Clock::now();
-    const bool reused = acceleration.build(scene);
-    stats.build_seconds = seconds_since(t0);
-
-    RenderOptions ro;
-    ro.hider = o.hider;
-    ro.threads = o.threads;
-    ro.seed = o.seed;
-    if (o.contribution_threshold) ro.contribution_threshold = *o.contribution_threshold;
-    ro.progress = [&](double f) { progress.update(f); };
-    progress.start(path);
-    Image image = render_frame(scene, ro, diag, stats);
-    progress.finish();
-
-    ImageMetadata meta;
-    meta.software = std::string("darc ") + DARC_VERSION;
-    meta.hider = to_string(o.hider);
-    meta.samples_per_pixel = int(scene.output.pixel_samples[0] * scene.output.pixel_samples[1]);
-    meta.render_seconds = float(stats.render_seconds);
-    const FrameErrors& frame_errors = diag.frame_errors();  // the requests this frame was rendered without
-    meta.error_count = frame_errors.count;
-    meta.first_error = frame_errors.first;
-    WriteResult wr = write_within_reserve(o, path, image, meta, colors, scene.output.display_mode);
-    for (const std::string& w : wr.warnings) std::fprintf(stderr, "darc: warning: %s: %s\n", path.c_str(), w.c_str());
-    if (wr.nonfinite_replaced > 0)
-      std::fprintf(stderr, "darc: warning: %lld non-finite values written as 0 in %s\n",
-                   static_cast<long long>(wr.nonfinite_replaced), path.c_str());
-    if (!wr.ok) {
-      std::fprintf(stderr, "darc: error: cannot write %s: %s\n", path.c_str(), wr.error.c_str());
-      io_error = true;
-    } else {
-      written.insert(path);
-      if (!o.quiet && frame_errors.count > 0)
-        std::fprintf(stderr, "darc: wrote %s with %lld scene errors (recorded as %s in it)\n", path.c_str(),
-                     static_cast<long long>(frame_errors.count), kErrorCountAttribute);
-      else if (!o.quiet)
-        std::fprintf(stderr, "darc: wrote %s\n", path.c_str());
-    }
-    if (!o.preview.empty()) {
-      std::string pv = substitute_frame_number(o.preview, scene.output.frame_number);
-      WriteResult pr = write_within_reserve(o, pv, image, meta, colors, "rgba");
-      if (!pr.ok) {
-        std::fprintf(stderr, "darc: error: cannot write %s: %s\n", pv.c_str(), pr.error.c_str());
-        io_error = true;
-      }
-    }
-    nlohmann::json frame_stats{{"frame", scene.output.frame_number},
-                               {"output", path},
-                               {"hider", to_string(o.hider)},
-                               {"resolution", {scene.output.xres, scene.output.yres}},
-                               {"pixel_samples", {scene.output.pixel_samples[0], scene.output.pixel_samples[1]}},
-                               {"curve_segments", scene.curves.size()},
-                               {"accelerator", to_string(scene.accel.kind())},
-                               {"accelerator_reused", reused},
-                               {"memory", memory_json(scene)},
-                               {"parse_seconds", stats.parse_seconds},
-                               {"build_seconds", stats.build_seconds},
-                               {"render_seconds", stats.render_seconds},
-                               {"counters", counters_json(stats.counters)}};
-    if (!scene.output.integrator.empty()) frame_stats["integrator"] = integrator_json(scene.output.integrator);
-    if (stats_per_frame) {
-      const std::string stats_path = substitute_frame_number(o.stats_path, scene.output.frame_number);
-      const std::string error = write_stats_file(stats_path, nlohmann::json::array({std::move(frame_stats)}), run_stats());
-      if (!error.empty()) {
-        std::fprintf(stderr, "darc: error: cannot write %s: %s\n", stats_path.c_str(), error.c_str());
-        io_error = true;
-      }
-    } else {
-      stats_frames.push_back(std::move(frame_stats));
-    }
-    segment_start = Clock::now();
-  };
+  ArchiveCache archives;  // each archive parsed once for the run (--no-archive-cache: off)
+  FrameSession frames(o, colors, diag, progress, &archives);
 
   FrameOverrides overrides;
   overrides.xres = o.xres;
@@ -366,7 +151,7 @@ int run_render_session(const AppOptions& o) {
     }
     overrides.display_folder = here.string();
   }
-  SceneBuilder builder(diag, cb, overrides);
+  SceneBuilder builder(diag, frames.callbacks(), overrides);
   RibParser parser(builder, diag);
   if (o.archive_cache) parser.use_archive_cache(&archives);
   configure_procedurals(o, parser);
@@ -378,19 +163,13 @@ int run_render_session(const AppOptions& o) {
   builder.finish(SourceLoc{});
   if (diag.aborted())
     std::fprintf(stderr, "darc: stopped at the first error (%s)\n", o.strict ? "--strict" : "ErrorHandler \"abort\"");
-  if (o.frames && frames_seen == 0)
+  if (o.frames && frames.frames_seen() == 0)
     std::fprintf(stderr, "darc: warning: --frames selected none of the frames in the input\n");
   print_suppression_summary(diag);
 
-  if (!o.stats_path.empty() && !stats_per_frame) {
-    const std::string error = write_stats_file(o.stats_path, stats_frames, run_stats());
-    if (!error.empty()) {
-      std::fprintf(stderr, "darc: error: cannot write %s: %s\n", o.stats_path.c_str(), error.c_str());
-      io_error = true;
-    }
-  }
+  const bool written = frames.finish();
   if (diag.error_count() > 0) return kExitSceneError;
-  return io_error ? kExitRenderError : kExitOk;
+  return written ? kExitOk : kExitRenderError;
 }
 
 }  // namespace darc

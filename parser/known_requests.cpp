@@ -125,7 +125,6 @@ constexpr std::array kKnownRequests = {
     KnownRequest{"Else", O::RiSpec34, K::Other},
     KnownRequest{"IfEnd", O::RiSpec34, K::Other},
     KnownRequest{"Resource", O::RiSpec34, K::Other},
-    KnownRequest{"Camera", O::RiSpec34, K::Other},
     KnownRequest{"DisplayChannel", O::RiSpec34, K::Other},
     KnownRequest{"PixelSampleImager", O::RiSpec34, K::Other},
     KnownRequest{"Shader", O::RiSpec34, K::Other},

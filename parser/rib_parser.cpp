@@ -84,6 +84,24 @@ bool RibParser::parse_string(std::string_view text, const std::string& name) {
   return diag_.error_count() == errors_before;
 }
 
+bool RibParser::parse_request_text(std::string text, const SourceLoc& at) {
+  const int errors_before = diag_.error_count();
+  const size_t size = text.size();
+  RibTextSpan span{std::make_shared<const std::string>(std::move(text)), 0, size, at.file, std::max(at.line, 1),
+                   std::max(at.column, 1)};
+  Lexer lexer(span);
+  std::error_code ec;
+  include_stack_.push_back((fs::current_path(ec) / "<ri>").string());
+  // The calling program goes on after an exception (out of memory, its own error handler's):
+  // the stack must not keep this entry.
+  struct Pop {
+    std::vector<std::string>& stack;
+    ~Pop() { stack.pop_back(); }
+  } pop{include_stack_};
+  parse_requests(lexer);
+  return diag_.error_count() == errors_before;
+}
+
 void RibParser::parse_text(std::string text, const std::string& name) {
   Lexer lexer(std::move(text), std::make_shared<const std::string>(name));
   include_stack_.push_back(canonical_name(name));

@@ -42,6 +42,14 @@ class RibParser {
   // ReadArchive paths.
   bool parse_string(std::string_view text, const std::string& name);
 
+  // Parses RIB text that a program gave as calls (the RI bindings, ri/, pass the requests the
+  // parser keeps state for through here: Declare, Option, Attribute, FrameBegin, ReadArchive,
+  // procedurals): positions start at `at`, and relative archive names are taken from the working
+  // folder. Returns false when anything failed.
+  bool parse_request_text(std::string text, const SourceLoc& at);
+  // The names given a type by Declare so far.
+  const DeclarationMap& declarations() const { return declared_; }
+
   // The archive search path currently in effect (from Option "searchpath" "archive").
   const std::vector<std::string>& archive_search_path() const { return archive_path_; }
 

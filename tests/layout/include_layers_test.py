@@ -3,12 +3,13 @@
 
 Stages, lowest first (docs/architecture.md says why each is where it is):
   parser/ -> core/math/ -> core/footprint/ -> core/geometry/ -> core/accel/ -> core/scene/
-  (core/scene/ris/ below core/scene/builder/) -> shading/ -> integrator/ -> app/
+  (core/scene/ris/ below core/scene/builder/) -> shading/ -> integrator/ -> app/ -> ri/ (the RI C
+  binding) -> python/ (the Python module)
 Inside core/geometry/, the families curves/, points/ and surfaces/ do not include each other
 (what they share lives in footprint/ or math/), and surfaces/patches/ and surfaces/subdivision/
 only include surfaces/ itself. Also: core/ has at most ten files at its top level.
 
-Exit 0 when every include of parser/, core/, shading/, integrator/ and app/ keeps the rule; else
+Exit 0 when every include of parser/, core/, shading/, integrator/, app/, ri/ and python/ keeps the rule; else
 the offending includes, one per line (file:line: includes X, which is stage N above).
 """
 import os
@@ -30,6 +31,8 @@ STAGES = [
     ("shading/", 8),
     ("integrator/", 9),
     ("app/", 10),
+    ("ri/", 11),
+    ("python/", 12),
 ]
 GEOMETRY_FAMILIES = ["core/geometry/curves/", "core/geometry/points/", "core/geometry/surfaces/"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
@@ -52,7 +55,7 @@ def family_of(path):
 
 def problems():
     found = []
-    for top in ("parser", "core", "shading", "integrator", "app"):
+    for top in ("parser", "core", "shading", "integrator", "app", "ri", "python"):
         for folder, _, files in os.walk(os.path.join(ROOT, top)):
             for name in sorted(files):
                 if not name.endswith((".h", ".cpp", ".inc", ".def")):

@@ -20,7 +20,7 @@ LightFilter "PxrRodLightFilter" "rod"
 DisplayFilter "PxrBackgroundDisplayFilter" "bgd"
   Displace "PxrDisplace" "disp" "float dispAmount" [0.1]
 DisplayChannel "color Ci"
-Camera "main"
+System "ls"
 Procedural2 "DynamicLoad" "SubdivisionMesh" "string dsoname" ["x"]
 Resource "r" "attributes" "string operation" ["save"]
 Frobnicate 1 2

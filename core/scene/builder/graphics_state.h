@@ -32,6 +32,8 @@ struct Options {
   double lens_radius = 0, focal_distance = 1;  // DepthOfField: a pinhole by default
   SourceLoc crop_loc;  // of the CropWindow in effect (its error is reported at WorldBegin)
   std::vector<PendingLight> pre_world_lights;
+  // Camera requests: each name and the transform then in effect (world to that camera).
+  std::vector<std::pair<std::string, Matrix4>> named_cameras;
   std::vector<std::string> texture_search_path;  // absolute folders (texture_paths.h)
 };
 

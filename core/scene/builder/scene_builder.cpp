@@ -151,6 +151,12 @@ void SceneBuilder::start_scene(const SourceLoc& loc) {
   scoped_spaces_.clear();
   named_spaces_["world"] = Matrix4{};
   named_spaces_["camera"] = camera_to_world_;
+  // A named camera is a coordinate system of its name (as in PRMan); the image is rendered from
+  // the camera in effect at WorldBegin.
+  for (const auto& [name, world_to_named] : options_.named_cameras) {
+    Matrix4 named_to_world;
+    if (world_to_named.inverse(named_to_world)) named_spaces_[name] = named_to_world;
+  }
   light_handles_.clear();
   area_light_handles_.clear();
   skipped_primitives_.clear();

@@ -222,6 +222,16 @@ void SceneBuilder::hider(const std::string& type, const ParamList&, const Source
   options_.output.hider = type;
 }
 
+void SceneBuilder::camera(const std::string& name, const ParamList& params, const SourceLoc& loc) {
+  if (!option_allowed("Camera", loc)) return;
+  options_.named_cameras.emplace_back(name, ctm_);
+  if (!params.empty())
+    diag_.warning_once("camera parameters", loc, "Camera",
+                       "camera parameters (\"" + params.params.front().name +
+                           "\", shutter opening, lens and projection settings) are not supported: ignored; "
+                           "the image is rendered from the camera in effect at WorldBegin");
+}
+
 void SceneBuilder::ignored_request(const std::string& request, const std::vector<double>& numbers,
                                    const std::vector<std::string>&, const SourceLoc& loc) {
   // ErrorHandler: the parser has applied it to the Diagnostics.

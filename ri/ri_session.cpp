@@ -1,0 +1,190 @@
+#include "ri/ri_session.h"
+
+#include "parser/standard_declarations.h"
+
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace darc {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The settings of the darc command without options, but quiet: a library prints nothing of its
+// own (messages go to the error handler).
+AppOptions binding_options() {
+  AppOptions o;
+  o.quiet = true;
+  o.trust_rib = true;  // the program is the user's: its Display names go where it says
+  return o;
+}
+
+}  // namespace
+
+RiSession::RiSession(const std::string& name, Diagnostics::Sink sink)
+    : diag_(std::move(sink)), options_(binding_options()), steps_(make_target(name)), parser_(steps_, diag_) {
+  parser_.set_trust_rib(true);
+  if (rendering()) parser_.use_archive_cache(&archives_);
+}
+
+RiTarget& RiSession::make_target(const std::string& name) {
+  if (name.empty()) {
+    ColorConfigLookup lookup = find_color_config("");
+    if (!lookup.config) throw std::runtime_error(lookup.error);
+    colors_ = std::move(lookup.config);
+    frames_ = std::make_unique<FrameSession>(options_, *colors_, diag_, progress_, &archives_);
+    builder_ = std::make_unique<SceneBuilder>(diag_, frames_->callbacks());
+    return *builder_;
+  }
+  if (name == "-") {
+    writer_ = std::make_unique<RibWriter>(std::cout);
+    return *writer_;
+  }
+  rib_path_ = name;
+  // Unique to this session: two sessions of one process may write the same name.
+  rib_temp_path_ = name + ".part" + std::to_string(::getpid()) + "-" +
+                   std::to_string(reinterpret_cast<std::uintptr_t>(this));
+  rib_file_.open(rib_temp_path_, std::ios::binary | std::ios::trunc);
+  if (!rib_file_) throw std::runtime_error("cannot write " + rib_temp_path_);
+  writer_ = std::make_unique<RibWriter>(rib_file_);
+  return *writer_;
+}
+
+RiSession::~RiSession() {
+  if (ended_) return;
+  try {
+    end();
+  } catch (...) {
+    std::fprintf(stderr, "darc: error: a RenderMan session could not be ended cleanly\n");
+  }
+}
+
+SourceLoc RiSession::next_call() {
+  ++calls_;
+  return SourceLoc{std::make_shared<const std::string>("<ri call " + std::to_string(calls_) + ">"), 1, 1};
+}
+
+void RiSession::parse_request(std::string rib_text, const SourceLoc& loc) {
+  parser_.parse_request_text(std::move(rib_text), loc);
+}
+
+namespace {
+
+// The RIB text of one request as RibWriter writes it.
+template <typename Write>
+std::string rib_text(Write write) {
+  std::ostringstream text;
+  RibWriter writer(text);
+  write(writer);
+  return text.str();
+}
+
+std::string bound_text(const std::array<double, 6>& bound) {
+  std::string text = "[";
+  for (size_t i = 0; i < 6; ++i) {
+    if (i > 0) text += ' ';
+    text += rib_number(bound[i]);
+  }
+  text += ']';
+  return text;
+}
+
+}  // namespace
+
+void RiSession::declare(const std::string& name, const std::string& declaration, const SourceLoc& loc) {
+  parse_request(rib_text([&](RibWriter& w) { w.declare(name, declaration, loc); }), loc);
+}
+
+void RiSession::option(const std::string& category, const ParamList& params, const SourceLoc& loc) {
+  parse_request(rib_text([&](RibWriter& w) { w.option(category, params, loc); }), loc);
+}
+
+void RiSession::attribute(const std::string& category, const ParamList& params, const SourceLoc& loc) {
+  parse_request(rib_text([&](RibWriter& w) { w.attribute(category, params, loc); }), loc);
+}
+
+void RiSession::frame_begin(int number, const SourceLoc& loc) {
+  parse_request(rib_text([&](RibWriter& w) { w.frame_begin(number, loc); }), loc);
+}
+
+void RiSession::read_archive(const std::string& name, const SourceLoc& loc) {
+  parse_request("ReadArchive " + rib_string(name) + "\n", loc);
+}
+
+void RiSession::delayed_read_archive(const std::string& file, const std::array<double, 6>& bound,
+                                     const SourceLoc& loc) {
+  parse_request("Procedural \"DelayedReadArchive\" [" + rib_string(file) + "] " + bound_text(bound) + "\n", loc);
+}
+
+void RiSession::run_program(const std::string& program, const std::string& argument,
+                            const std::array<double, 6>& bound, const SourceLoc& loc) {
+  parse_request("Procedural \"RunProgram\" [" + rib_string(program) + " " + rib_string(argument) + "] " +
+                    bound_text(bound) + "\n",
+                loc);
+}
+
+void RiSession::error_handler(const std::string& name, const SourceLoc& loc) {
+  parse_request("ErrorHandler " + rib_string(name) + "\n", loc);
+}
+
+void RiSession::expand_procedural(const std::array<double, 6>& bound,
+                                  const std::function<void(double detail)>& subdivide, const SourceLoc& loc) {
+  const ProceduralBound view = target().procedural_bound(bound, loc);
+  if (!view.wanted) return;
+  target().attribute_begin(loc);
+  try {
+    subdivide(view.raster_area);
+  } catch (...) {
+    try {
+      target().attribute_end(loc);  // the block closes whatever the procedural did
+    } catch (...) {
+      // the procedural's own exception is the one to report
+    }
+    throw;
+  }
+  target().attribute_end(loc);
+}
+
+std::optional<ParamDecl> RiSession::declared_type(const std::string& name) const {
+  const DeclarationMap& declared = parser_.declarations();
+  if (auto it = declared.find(name); it != declared.end()) return it->second;
+  return standard_declaration(name);
+}
+
+bool RiSession::end() {
+  if (ended_) return true;
+  ended_ = true;
+  bool ok = true;
+  if (builder_) {
+    builder_->finish(SourceLoc{std::make_shared<const std::string>("<ri end>"), 1, 1});
+    ok = frames_->finish();
+  }
+  if (rib_file_.is_open()) {
+    rib_file_.close();
+    const bool written = !rib_file_.fail();
+    std::error_code ec;
+    // A file cut short by the abort handler is not left behind, as no image is.
+    if (!written || diag_.aborted()) {
+      if (!written) std::fprintf(stderr, "darc: error: cannot write %s\n", rib_temp_path_.c_str());
+      fs::remove(rib_temp_path_, ec);
+      return false;
+    }
+    fs::rename(rib_temp_path_, rib_path_, ec);
+    if (ec) {
+      std::fprintf(stderr, "darc: error: cannot write %s: %s\n", rib_path_.c_str(), ec.message().c_str());
+      fs::remove(rib_temp_path_, ec);
+      return false;
+    }
+  }
+  if (writer_ && rib_path_.empty()) std::cout.flush();
+  return ok;
+}
+
+}  // namespace darc
