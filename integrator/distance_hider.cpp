@@ -1,5 +1,7 @@
 #include "integrator/distance_hider.h"
 
+#include "integrator/footprint_secondary_rays.h"
+
 #include "core/footprint/footprint_frame.h"
 #include "core/footprint/polygon_coverage.h"
 #include "core/footprint/sphere_coverage.h"
@@ -56,10 +58,6 @@ DepthPlane depth_plane(const Ray& ray, const RayFootprint& footprint, const Vec3
   p.valid = std::isfinite(p.t0) && std::isfinite(p.du) && std::isfinite(p.dv);
   return p;
 }
-
-// How much longer than the incoming footprint is wide a shadow ray's receiving patch may be
-// (the stretch of a surface seen about 83 degrees from its normal; footprint-everything.md §2.5).
-constexpr float kShadowPatchElongation = 2;
 
 // Widens a camera ray's footprint by its lens (DepthOfField): one ray per pixel stratum then
 // stands for the whole lens. The sub-rays over the lens are a pencil through the focal point
@@ -398,118 +396,6 @@ DistanceContext make_distance_context(const HiderContext& base, const DistanceHi
   ctx.min_radius = kMinFootprintSceneFraction * std::max(max_component(extent), 1e-6f);
   return ctx;
 }
-
-namespace {
-
-// Secondary rays of the distance hider: footprint rays through the same walk and A-buffer.
-class FootprintSecondaryRays : public SecondaryRayTracer {
- public:
-  FootprintSecondaryRays(const DistanceContext& ctx, RayCounters& counters, RayScratchStack& scratch)
-      : ctx_(ctx), counters_(counters), scratch_(scratch) {}
-
-  // A surface seen on part of the footprint (ABuffer::surface_at_visible_part): the points it is
-  // seen at, and the whole footprint's patch on its plane (centre and axes), whose points are
-  // the footprint's.
-  struct SeenSurface {
-    FootprintPointWeights weights;
-    Vec3f centre, dPdx, dPdy;
-  };
-  // The surface being shaded (null: none, or not seen on part of the footprint).
-  void shading(const SeenSurface* seen) { seen_ = seen; }
-
-  Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance, const RayFootprint* incoming,
-                             const PathState& path) override {
-    const SecondaryRaySettings& s = ctx_.base.secondary;
-    Ray ray{at.P, l, s.ray_offset, distance};
-    ray.time = at.time;
-    ray.sweeps_shutter = at.sweeps_shutter;
-    ray.sweep_from = at.sweep_from;
-    ray.sweep_to = at.sweep_to;
-    // The receiving patch at most kShadowPatchElongation times the incoming footprint's width
-    // at P.
-    const float max_extent =
-        incoming ? kShadowPatchElongation * std::max(length(incoming->dox + incoming->ddx * at.t),
-                                                     length(incoming->doy + incoming->ddy * at.t))
-                 : std::numeric_limits<float>::infinity();
-    if (seen_ && !at.is_curve && length(seen_->dPdx) <= max_extent && length(seen_->dPdy) <= max_extent)
-      return seen_surface_transmittance(at, l, distance, path);
-    RayFootprint footprint = shadow_footprint(at, distance, ctx_.min_radius, max_extent);
-    if (cone_ > 0) widen_by_cone(footprint, l, cone_);
-    HitFilter filter = shadow_filter(at);
-    uint32_t local;
-    if (!at.is_curve && ctx_.base.scene.prim_kind(at.primitive, local) == Scene::PrimKind::Surface) {
-      // The start point's own mesh, within a few footprint radii, is the start point itself.
-      filter.origin_layer = ctx_.base.scene.surfaces.layer(local);
-      filter.origin_layer_min_t = 4 * footprint.reach(0);
-    }
-    return trace_footprint_transmittance(ctx_, ray, footprint, counters_,
-                                         scratch_.at(size_t(path.depth) + 1), filter,
-                                         stopping_transmittance(s, path.weight, kDistanceMinTransmittance));
-  }
-
-  bool cone_shadow_transmittance(const Interaction& at, const Vec3f& l, float half_angle, const RayFootprint* incoming,
-                                 const PathState& path, Vec3f& transmittance) override {
-    cone_ = half_angle;
-    transmittance = shadow_transmittance(at, l, std::numeric_limits<float>::infinity(), incoming, path);
-    cone_ = 0;
-    return true;
-  }
-
-  // A surface seen on part of the footprint is lit where it is seen: the shadow ray leaves the
-  // whole footprint's patch and its points are averaged with the weights they are seen with.
-  // The seen part's bounding box instead (RayFootprint::part) takes in the points between what
-  // is seen: on a scalp seen through hair, the points under the strands, in their shadows.
-  Vec3f seen_surface_transmittance(const Interaction& at, const Vec3f& l, float distance, const PathState& path) {
-    const SecondaryRaySettings& s = ctx_.base.secondary;
-    Interaction patch = at;
-    patch.P = seen_->centre;
-    patch.dPdx = seen_->dPdx;
-    patch.dPdy = seen_->dPdy;
-    Vec3f dir = l;
-    float to_light = distance;
-    if (std::isfinite(distance)) {
-      dir = at.P + l * distance - patch.P;
-      to_light = length(dir);
-      dir = dir / to_light;
-    }
-    RayFootprint footprint = shadow_footprint(patch, to_light, ctx_.min_radius, std::numeric_limits<float>::infinity());
-    if (cone_ > 0) widen_by_cone(footprint, dir, cone_);
-    HitFilter filter = shadow_filter(at);
-    uint32_t local;
-    if (ctx_.base.scene.prim_kind(at.primitive, local) == Scene::PrimKind::Surface) {
-      filter.origin_layer = ctx_.base.scene.surfaces.layer(local);
-      filter.origin_layer_min_t = 4 * footprint.reach(0);
-    }
-    Ray ray{patch.P, dir, s.ray_offset, to_light};
-    ray.time = at.time;
-    ray.sweeps_shutter = at.sweeps_shutter;
-    ray.sweep_from = at.sweep_from;
-    ray.sweep_to = at.sweep_to;
-    return trace_footprint_transmittance(ctx_, ray, footprint, counters_,
-                                         scratch_.at(size_t(path.depth) + 1), filter,
-                                         stopping_transmittance(s, path.weight, kDistanceMinTransmittance),
-                                         &seen_->weights);
-  }
-
-  Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint* footprint, const PathState& next,
-                 const Vec3f& beyond) override {
-    RayFootprint fp = footprint ? *footprint : RayFootprint{};
-    fp.min_radius = ctx_.min_radius;
-    const float self = std::max(ctx_.base.secondary.self_offset, 4 * fp.reach(0));
-    const SampleValue v =
-        trace_distance_ray(ctx_, ray, fp, counters_, scratch_, next, leaving_filter(at, ctx_.base.scene, self));
-    return v.color + beyond * (1 - v.alpha);
-  }
-
- private:
-  const DistanceContext& ctx_;
-  RayCounters& counters_;
-  RayScratchStack& scratch_;
-  const SeenSurface* seen_ = nullptr;
-  float cone_ = 0;  // while a cone shadow ray is traced: its half-angle
-};
-
-}  // namespace
 
 SampleValue trace_distance_ray(const DistanceContext& ctx, const Ray& ray, const RayFootprint& footprint,
                                RayCounters& counters, RayScratchStack& scratch, const PathState& path,
