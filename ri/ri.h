@@ -2,9 +2,10 @@
  *
  * RiBegin(RI_NULL) (or "") renders in this process: each frame is rendered at its RiWorldEnd and
  * written to its RiDisplay file, exactly as the darc command renders the same requests given as
- * RIB (its default settings: the distance hider, every core). RiBegin("scene.rib") writes the
- * requests as RIB text instead (the file appears whole at RiEnd); RiBegin("-") writes RIB to
- * standard output.
+ * RIB (its default settings: the distance hider, every core). RiBegin("darc ARGS") renders with
+ * the darc command's options ARGS (split at blanks, e.g. "darc --hider stochastic
+ * --pixel-samples 4 --threads 2"; no RIB file names). RiBegin("scene.rib") writes the requests as
+ * RIB text instead (the file appears whole at RiEnd); RiBegin("-") writes RIB to standard output.
  *
  * Parameter lists are RI_NULL-terminated token/value pairs (or, in the ...V forms, n tokens and n
  * values). A token is typed by its inline declaration ("vertex point P"), by RiDeclare, or by the

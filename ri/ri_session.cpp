@@ -4,11 +4,13 @@
 
 #include <unistd.h>
 
+#include <sstream>
+#include <vector>
+
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
 #include <stdexcept>
 
 namespace darc {
@@ -17,30 +19,62 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The settings of the darc command without options, but quiet: a library prints nothing of its
-// own (messages go to the error handler).
-AppOptions binding_options() {
-  AppOptions o;
-  o.quiet = true;
-  o.trust_rib = true;  // the program is the user's: its Display names go where it says
-  return o;
+// "darc" or "darc ARGS": rendering in this process, with the darc command's options ARGS
+// (split at blanks; no quoting) for the session, as if the requests were a RIB file on that
+// command line.
+bool is_render_name(const std::string& name) {
+  return name.empty() || name == "darc" || name.rfind("darc ", 0) == 0;
 }
 
+// The settings of the session: the darc command's defaults, or the options given after "darc",
+// but quiet (a library prints no lines of its own; messages go to the error handler) and
+// trusting the program's Display names and procedurals. Throws std::runtime_error on a usage
+// error (the parser has printed it) or an option that makes no sense here.
+AppOptions session_options(const std::string& name) {
+  AppOptions o;
+  if (name.rfind("darc ", 0) == 0) {
+    std::vector<std::string> words{"darc"};
+    std::istringstream split(name.substr(5));
+    for (std::string word; split >> word;) words.push_back(word);
+    words.push_back("-");  // the command wants an input: the session's requests are it
+    std::vector<char*> argv;
+    for (std::string& w : words) argv.push_back(w.data());
+    bool exit_now = false;
+    int exit_code = 0;
+    o = parse_command_line(int(argv.size()), argv.data(), exit_now, exit_code);
+    if (exit_now) throw std::runtime_error("\"" + name + "\": not a darc command line (see the message above)");
+    if (o.inputs.size() != 1) throw std::runtime_error("\"" + name + "\": RIB files cannot be named here");
+    if (o.cat) throw std::runtime_error("\"" + name + "\": --cat: RiBegin(\"file.rib\") writes RIB");
+    o.inputs.clear();
+  }
+  o.quiet = true;
+  o.trust_rib = true;
+  return o;
+}
 }  // namespace
 
 RiSession::RiSession(const std::string& name, Diagnostics::Sink sink)
-    : diag_(std::move(sink)), options_(binding_options()), steps_(make_target(name)), parser_(steps_, diag_) {
+    : diag_(std::move(sink)),
+      options_(session_options(is_render_name(name) ? name : "")),
+      progress_(options_.progress, ::isatty(STDERR_FILENO) != 0),
+      steps_(make_target(name)),
+      parser_(steps_, diag_) {
   parser_.set_trust_rib(true);
-  if (rendering()) parser_.use_archive_cache(&archives_);
+  if (options_.strict) diag_.fix_handler(ErrorHandler::Abort);
+  if (rendering() && options_.archive_cache) parser_.use_archive_cache(&archives_);
 }
 
 RiTarget& RiSession::make_target(const std::string& name) {
-  if (name.empty()) {
-    ColorConfigLookup lookup = find_color_config("");
+  if (is_render_name(name)) {
+    ColorConfigLookup lookup = find_color_config(options_.ocio_config);
     if (!lookup.config) throw std::runtime_error(lookup.error);
     colors_ = std::move(lookup.config);
     frames_ = std::make_unique<FrameSession>(options_, *colors_, diag_, progress_, &archives_);
-    builder_ = std::make_unique<SceneBuilder>(diag_, frames_->callbacks());
+    FrameOverrides overrides;  // as the command applies --res and --pixel-samples
+    overrides.xres = options_.xres;
+    overrides.yres = options_.yres;
+    overrides.pixel_samples = options_.pixel_samples;
+    builder_ = std::make_unique<SceneBuilder>(diag_, frames_->callbacks(), overrides);
     return *builder_;
   }
   if (name == "-") {

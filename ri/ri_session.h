@@ -33,8 +33,10 @@ namespace darc {
 
 class RiSession {
  public:
-  // `name`: "" renders in this process; "-" writes RIB to standard output; anything else is the
-  // RIB file to write. `sink` receives every diagnostic the error handler lets through.
+  // `name`: "" (or "darc", or "darc ARGS" with the darc command's options, e.g. "darc --hider
+  // stochastic --pixel-samples 4") renders in this process; "-" writes RIB to standard output;
+  // anything else is the RIB file to write. `sink` receives every diagnostic the error handler
+  // lets through.
   // Throws std::runtime_error when the output cannot be opened or no colour configuration is found.
   RiSession(const std::string& name, Diagnostics::Sink sink);
   ~RiSession();
@@ -85,7 +87,7 @@ class RiSession {
   // Rendering.
   AppOptions options_;
   std::optional<ColorConfig> colors_;
-  ProgressReporter progress_{false, false};
+  ProgressReporter progress_;
   ArchiveCache archives_;
   std::unique_ptr<FrameSession> frames_;
   std::unique_ptr<SceneBuilder> builder_;

@@ -128,6 +128,25 @@ class SameImageWhicheverWay(unittest.TestCase):
                 self.assertTrue(np.array_equal(image, images["list"]), name)
 
 
+class CommandOptions(unittest.TestCase):
+    def test_begin_takes_the_commands_options_after_darc(self):
+        with tempfile.TemporaryDirectory() as folder:
+            ri = darc.Ri()
+            ri.Begin("darc --hider stochastic --pixel-samples 3 --res 16x12")
+            emit_scene(ri, os.path.join(folder, "s"))
+            ri.End()
+            image = oiio.ImageInput.open(os.path.join(folder, "s.0001.exr"))
+            spec = image.spec()
+            image.close()
+            self.assertEqual((spec.width, spec.height), (16, 12))
+            self.assertEqual(spec.get_string_attribute("darc:hider"), "stochastic")
+            self.assertEqual(spec.get_int_attribute("darc:spp"), 9)
+
+    def test_a_bad_command_line_raises(self):
+        with self.assertRaises(RuntimeError):
+            darc.Ri().Begin("darc --no-such-option")
+
+
 class Turntable(unittest.TestCase):
     def test_the_example_renders_as_the_rib_it_writes(self):
         script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes", "turntable.py")

@@ -130,5 +130,33 @@ TEST(CBindingScene, RendersBitwiseAsRibTextDoesInEveryWay) {
   EXPECT_FALSE(read_or_fail(dir / "hand.0001.exr").identical_to(read_or_fail(dir / "hand.0002.exr")));
 }
 
+TEST(CBindingScene, RiBeginTakesTheCommandsOptionsAfterDarc) {
+  ScratchDir dir("c_binding_command_options");
+  RiBegin("darc --hider stochastic --pixel-samples 2 --res 48x36 --threads 1");
+  ASSERT_NE(RiGetContext(), nullptr);
+  emit_scene((dir / "inprocess").string());
+  RiEnd();
+  write_file(dir / "hand.rib", scene_rib("hand"));
+  const RunResult hand = run_darc(dir.path(), "--hider stochastic --pixel-samples 2 --res 48x36 hand.rib");
+  ASSERT_EQ(hand.exit_code, 0) << hand.err;
+  for (const char* frame : {"0001", "0002"}) {
+    const fs::path in_process = dir / (std::string("inprocess.") + frame + ".exr");
+    const Pixels a = read_or_fail(in_process), b = read_or_fail(dir / (std::string("hand.") + frame + ".exr"));
+    EXPECT_EQ(a.width, 48);
+    EXPECT_TRUE(a.identical_to(b)) << "frame " << frame;
+    const std::optional<OIIO::ImageSpec> spec = read_image_header(in_process);
+    ASSERT_TRUE(spec);
+    EXPECT_EQ(spec->get_string_attribute("darc:hider"), "stochastic");
+    EXPECT_EQ(spec->get_int_attribute("darc:spp"), 4);
+  }
+}
+
+TEST(CBindingScene, ABadCommandLineStartsNoContext) {
+  RiBegin("darc --no-such-option");
+  EXPECT_EQ(RiGetContext(), nullptr);
+  RiBegin("darc extra.rib");  // the session's requests are the only input
+  EXPECT_EQ(RiGetContext(), nullptr);
+}
+
 }  // namespace
 }  // namespace darc::test
