@@ -1,5 +1,6 @@
 #include "ri/ri_session.h"
 
+#include "app/run_limits.h"
 #include "parser/standard_declarations.h"
 
 #include <unistd.h>
@@ -31,22 +32,20 @@ bool is_render_name(const std::string& name) {
 // trusting the program's Display names and procedurals. Throws std::runtime_error on a usage
 // error (the parser has printed it) or an option that makes no sense here.
 AppOptions session_options(const std::string& name) {
-  AppOptions o;
-  if (name.rfind("darc ", 0) == 0) {
-    std::vector<std::string> words{"darc"};
-    std::istringstream split(name.substr(5));
-    for (std::string word; split >> word;) words.push_back(word);
-    words.push_back("-");  // the command wants an input: the session's requests are it
-    std::vector<char*> argv;
-    for (std::string& w : words) argv.push_back(w.data());
-    bool exit_now = false;
-    int exit_code = 0;
-    o = parse_command_line(int(argv.size()), argv.data(), exit_now, exit_code);
-    if (exit_now) throw std::runtime_error("\"" + name + "\": not a darc command line (see the message above)");
-    if (o.inputs.size() != 1) throw std::runtime_error("\"" + name + "\": RIB files cannot be named here");
-    if (o.cat) throw std::runtime_error("\"" + name + "\": --cat: RiBegin(\"file.rib\") writes RIB");
-    o.inputs.clear();
-  }
+  // Without options too, so that the environment the command reads (DARC_PROCEDURAL_PATH) is read.
+  std::vector<std::string> words{"darc"};
+  std::istringstream split(name.rfind("darc ", 0) == 0 ? name.substr(5) : std::string());
+  for (std::string word; split >> word;) words.push_back(word);
+  words.push_back("-");  // the command wants an input: the session's requests are it
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  bool exit_now = false;
+  int exit_code = 0;
+  AppOptions o = parse_command_line(int(argv.size()), argv.data(), exit_now, exit_code);
+  if (exit_now) throw std::runtime_error("\"" + name + "\": not a darc command line (see the message above)");
+  if (o.inputs.size() != 1) throw std::runtime_error("\"" + name + "\": RIB files cannot be named here");
+  if (o.cat) throw std::runtime_error("\"" + name + "\": --cat: RiBegin(\"file.rib\") writes RIB");
+  o.inputs.clear();
   o.quiet = true;
   o.trust_rib = true;
   return o;
@@ -59,7 +58,8 @@ RiSession::RiSession(const std::string& name, Diagnostics::Sink sink)
       progress_(options_.progress, ::isatty(STDERR_FILENO) != 0),
       steps_(make_target(name)),
       parser_(steps_, diag_) {
-  parser_.set_trust_rib(true);
+  configure_procedurals(options_, parser_);  // trusted: the program's own searchpath holds
+  set_text_limit(options_, parser_);
   if (options_.strict) diag_.fix_handler(ErrorHandler::Abort);
   if (rendering() && options_.archive_cache) parser_.use_archive_cache(&archives_);
 }
@@ -74,6 +74,7 @@ RiTarget& RiSession::make_target(const std::string& name) {
     overrides.xres = options_.xres;
     overrides.yres = options_.yres;
     overrides.pixel_samples = options_.pixel_samples;
+    set_frame_memory_limit(options_, overrides);  // a frame over it fails alone: the program goes on
     builder_ = std::make_unique<SceneBuilder>(diag_, frames_->callbacks(), overrides);
     return *builder_;
   }

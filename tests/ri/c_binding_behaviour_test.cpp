@@ -107,6 +107,30 @@ TEST(CBindingErrors, UnderAbortNothingIsWrittenAndLaterCallsAreIgnored) {
   EXPECT_TRUE(file_names(dir.path()).empty()) << "a RIB cut short by the abort handler was left";
 }
 
+TEST(CBindingErrors, AFrameOverTheMemoryLimitFailsAloneAndTheProgramGoesOn) {
+  ScratchDir dir("c_binding_memory_limit");
+  reported().clear();
+  RiBegin("darc --memory-limit 4G");
+  RiErrorHandler(collect);
+  for (int frame = 1; frame <= 2; ++frame) {
+    RiFrameBegin(frame);
+    RiFormat(frame == 1 ? 16384 : 32, frame == 1 ? 16384 : 24, 1);  // frame 1's image: 32 GB
+    RiDisplay((dir / "f.#.exr").string().c_str(), "openexr", "rgba", RI_NULL);
+    RiProjection(RI_PERSPECTIVE, RI_NULL);
+    RiTranslate(0, 0, 5);
+    RiWorldBegin();
+    RiSphere(1, -1, 1, 360, RI_NULL);
+    RiWorldEnd();
+    RiFrameEnd();
+  }
+  RiEnd();
+  ASSERT_FALSE(reported().empty());
+  EXPECT_NE(reported()[0].message.find("error: Sphere: the frame would need about 32.0 GB"), std::string::npos)
+      << reported()[0].message;
+  EXPECT_FALSE(fs::exists(dir / "f.1.exr"));
+  EXPECT_TRUE(fs::exists(dir / "f.2.exr")) << "the next frame renders";
+}
+
 TEST(CBindingErrors, CallsOutsideAContextDoNothing) {
   RiWorldBegin();
   RtFloat p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0};
