@@ -47,6 +47,14 @@ void with_session(const char* request, const std::function<void(RiSession&, cons
   --context->calls_in_progress;
 }
 
+void name_and_params(const char* request, RtToken name, RtInt n, RtToken tokens[], RtPointer values[],
+                     void (RiTarget::*method)(const std::string&, const ParamList&, const SourceLoc&)) {
+  with_session(request, [&](RiSession& s, const SourceLoc& loc) {
+    const ParamList params = c_param_list(s, request, single_values(), n, tokens, values, loc);
+    (s.target().*method)(name ? name : "", params, loc);
+  });
+}
+
 double decimal_double(float value) {
   char text[64];
   const auto printed = std::to_chars(text, text + sizeof text, value);

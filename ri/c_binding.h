@@ -57,6 +57,11 @@ TokenValues collect_token_values(va_list args);
 ParamList c_param_list(RiSession& session, const char* request, const ValueCounts& counts, RtInt n,
                        const RtToken tokens[], const RtPointer values[], const SourceLoc& loc);
 
+// A request of a name and a parameter list (Surface, Projection, Hider, Camera, ...), whose
+// parameters have one value each: the call passed to the target's `method`.
+void name_and_params(const char* request, RtToken name, RtInt n, RtToken tokens[], RtPointer values[],
+                     void (RiTarget::*method)(const std::string&, const ParamList&, const SourceLoc&));
+
 }  // namespace darc
 
 // The variadic form of a ...V function: collects the pairs after `last` and calls `call`, which

@@ -8,14 +8,6 @@ using namespace darc;
 
 namespace {
 
-void shader(const char* request, RtToken name, RtInt n, RtToken tokens[], RtPointer values[],
-            void (RiTarget::*method)(const std::string&, const ParamList&, const SourceLoc&)) {
-  with_session(request, [&](RiSession& s, const SourceLoc& loc) {
-    const ParamList params = c_param_list(s, request, single_values(), n, tokens, values, loc);
-    (s.target().*method)(name ? name : "", params, loc);
-  });
-}
-
 // A request accepted without effect: its string and number arguments, as the parser passes them.
 void ignored(const char* request, std::vector<std::string> strings, std::vector<double> numbers) {
   with_session(request, [&](RiSession& s, const SourceLoc& loc) {
@@ -100,11 +92,11 @@ RtVoid RiOpacity(RtColor opacity) {
                [&](RiSession& s, const SourceLoc& loc) { s.target().opacity({opacity[0], opacity[1], opacity[2]}, loc); });
 }
 RtVoid RiSurfaceV(RtToken name, RtInt n, RtToken tokens[], RtPointer values[]) {
-  shader("Surface", name, n, tokens, values, &RiTarget::surface);
+  name_and_params("Surface", name, n, tokens, values, &RiTarget::surface);
 }
 RtVoid RiSurface(RtToken name, ...) { DARC_RI_WITH_TOKEN_VALUES(name, RiSurfaceV(name, tv.size(), tv.tokens.data(), tv.values.data())); }
 RtVoid RiDisplacementV(RtToken name, RtInt n, RtToken tokens[], RtPointer values[]) {
-  shader("Displacement", name, n, tokens, values, &RiTarget::displacement);
+  name_and_params("Displacement", name, n, tokens, values, &RiTarget::displacement);
 }
 RtVoid RiDisplacement(RtToken name, ...) {
   DARC_RI_WITH_TOKEN_VALUES(name, RiDisplacementV(name, tv.size(), tv.tokens.data(), tv.values.data()));

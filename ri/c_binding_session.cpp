@@ -15,14 +15,6 @@ void call_handler(RtErrorHandler handler, const Diagnostic& d) {
   handler(RIE_CONSISTENCY, severity, d.str().c_str());
 }
 
-void pass_params(const char* request, RtToken name, RtInt n, RtToken tokens[], RtPointer values[],
-                 void (RiTarget::*method)(const std::string&, const ParamList&, const SourceLoc&)) {
-  with_session(request, [&](RiSession& s, const SourceLoc& loc) {
-    const ParamList params = c_param_list(s, request, single_values(), n, tokens, values, loc);
-    (s.target().*method)(name ? name : "", params, loc);
-  });
-}
-
 }  // namespace
 
 extern "C" {
@@ -170,7 +162,7 @@ RtVoid RiCropWindow(RtFloat xmin, RtFloat xmax, RtFloat ymin, RtFloat ymax) {
   });
 }
 RtVoid RiProjectionV(RtToken name, RtInt n, RtToken tokens[], RtPointer values[]) {
-  pass_params("Projection", name, n, tokens, values, &RiTarget::projection);
+  name_and_params("Projection", name, n, tokens, values, &RiTarget::projection);
 }
 RtVoid RiProjection(RtToken name, ...) { DARC_RI_WITH_TOKEN_VALUES(name, RiProjectionV(name, tv.size(), tv.tokens.data(), tv.values.data())); }
 RtVoid RiClipping(RtFloat near_plane, RtFloat far_plane) {
@@ -249,11 +241,11 @@ RtVoid RiDisplay(const char* name, RtToken type, RtToken mode, ...) {
   DARC_RI_WITH_TOKEN_VALUES(mode, RiDisplayV(name, type, mode, tv.size(), tv.tokens.data(), tv.values.data()));
 }
 RtVoid RiCameraV(RtToken name, RtInt n, RtToken tokens[], RtPointer values[]) {
-  pass_params("Camera", name, n, tokens, values, &RiTarget::camera);
+  name_and_params("Camera", name, n, tokens, values, &RiTarget::camera);
 }
 RtVoid RiCamera(RtToken name, ...) { DARC_RI_WITH_TOKEN_VALUES(name, RiCameraV(name, tv.size(), tv.tokens.data(), tv.values.data())); }
 RtVoid RiHiderV(RtToken type, RtInt n, RtToken tokens[], RtPointer values[]) {
-  pass_params("Hider", type, n, tokens, values, &RiTarget::hider);
+  name_and_params("Hider", type, n, tokens, values, &RiTarget::hider);
 }
 RtVoid RiHider(RtToken type, ...) { DARC_RI_WITH_TOKEN_VALUES(type, RiHiderV(type, tv.size(), tv.tokens.data(), tv.values.data())); }
 RtVoid RiOptionV(RtToken name, RtInt n, RtToken tokens[], RtPointer values[]) {
