@@ -134,7 +134,7 @@ void render_tile_stochastic(const HiderContext& ctx, const PixelRect& rect, Tile
   std::vector<uint32_t> lens_strata(size_t(nx) * size_t(ny)), time_strata(lens_strata.size());
   // Motion blur: each sample sees the scene at one time of the shutter, stratified over the
   // pixel's samples (drawn only when something moves, so that still scenes keep their images).
-  const bool moves = ctx.scene.curves.has_motion();
+  const bool moves = ctx.scene.has_motion();
   for (int py = rect.y0; py < rect.y1; ++py)
     for (int px = rect.x0; px < rect.x1; ++px) {
       if (camera.has_lens()) shuffle_strata(uint32_t(px), uint32_t(py), kLensPermutationStream, ctx.seed, lens_strata);

@@ -122,8 +122,8 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
     it.material = surfaces.material(local);
     const Material& m = scene.materials[it.material];
     const Vec3f sign = m.flip_normals ? Vec3f{-1, -1, -1} : Vec3f{1, 1, 1};
-    const Vec3f ng = surfaces.geometric_normal(local, it.P);
-    const Vec3f ns = surfaces.shading_normal(local, it.P);
+    const Vec3f ng = surfaces.geometric_normal(local, it.P, ray.time);
+    const Vec3f ns = surfaces.shading_normal(local, it.P, ray.time);
     it.N = mul(sign, ns);
     it.Cs = m.color;
     it.Os = m.opacity;
@@ -134,8 +134,8 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
       // The normal's change across the footprint, as the difference of the normals at its
       // edges (exact for a sphere's first-order change, bounded for large footprints; zero on
       // flat faces).
-      it.dNdx = mul(sign, surfaces.shading_normal(local, it.P + it.dPdx) - ns);
-      it.dNdy = mul(sign, surfaces.shading_normal(local, it.P + it.dPdy) - ns);
+      it.dNdx = mul(sign, surfaces.shading_normal(local, it.P + it.dPdx, ray.time) - ns);
+      it.dNdy = mul(sign, surfaces.shading_normal(local, it.P + it.dPdy, ray.time) - ns);
     }
     if (m.reads_textures) {
       // A texture is filtered over the footprint's true extent on the surface, however long
@@ -143,7 +143,7 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
       // above is for the rays that leave the surface.
       const Vec3f tx = footprint ? transfer(footprint->axis_x(t), ray.d, plane_normal, kMaxTextureStretch) : Vec3f{};
       const Vec3f ty = footprint ? transfer(footprint->axis_y(t), ray.d, plane_normal, kMaxTextureStretch) : Vec3f{};
-      it.st = surfaces.texture_coordinates(local, it.P, tx, ty, kDefaultTextureCoordinates);
+      it.st = surfaces.texture_coordinates(local, it.P, tx, ty, kDefaultTextureCoordinates, ray.time);
     }
     return it;
   }

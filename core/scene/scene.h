@@ -130,6 +130,9 @@ struct Scene {
     return PrimKind::Point;
   }
   size_t primitive_count() const { return curves.size() + surfaces.size() + points.size(); }
+  // Motion blur: whether anything moves during the shutter (curves, or surfaces lowered to
+  // triangles); the hiders sample or sweep time only then, so that still scenes keep their images.
+  bool has_motion() const { return curves.has_motion() || surfaces.has_motion(); }
 
   // Builds the acceleration structure over the primitives (call once after all geometry is added).
   void build_acceleration(AcceleratorKind kind = kDefaultAccelerator);

@@ -38,22 +38,22 @@ bool SurfaceSet::intersect(uint32_t surface, const Ray& ray, SurfaceHit& hit) co
   return false;
 }
 
-Vec3f SurfaceSet::geometric_normal(uint32_t surface, const Vec3f& p) const {
+Vec3f SurfaceSet::geometric_normal(uint32_t surface, const Vec3f& p, float time) const {
   uint32_t i;
   switch (locate(surface, i)) {
     case Kind::Sphere: return spheres[i].normal_at(p);
     case Kind::Polygon: return polygons[i].normal;
-    case Kind::Triangle: return triangles.face_normal(i);
+    case Kind::Triangle: return triangles.face_normal(i, time);
     case Kind::Quadric: return quadrics[i].normal_at(p);
   }
   return {};
 }
 
-bool SurfaceSet::convex_outline(uint32_t surface, ConvexOutline& out) const {
+bool SurfaceSet::convex_outline(uint32_t surface, ConvexOutline& out, float time) const {
   uint32_t i;
   switch (locate(surface, i)) {
     case Kind::Triangle:
-      for (int k = 0; k < 3; ++k) out.corners[size_t(k)] = triangles.corner(i, k);
+      for (int k = 0; k < 3; ++k) out.corners[size_t(k)] = triangles.corner(i, k, time);
       out.count = 3;
       out.layer = layer(surface);
       return true;
@@ -83,10 +83,10 @@ uint32_t SurfaceSet::layer(uint32_t surface) const {
   return kNoLayer;
 }
 
-Vec3f SurfaceSet::shading_normal(uint32_t surface, const Vec3f& p) const {
+Vec3f SurfaceSet::shading_normal(uint32_t surface, const Vec3f& p, float time) const {
   uint32_t i;
-  if (locate(surface, i) == Kind::Triangle) return triangles.shading_normal(i, p);
-  return geometric_normal(surface, p);
+  if (locate(surface, i) == Kind::Triangle) return triangles.shading_normal(i, p, time);
+  return geometric_normal(surface, p, time);
 }
 
 namespace {
@@ -100,7 +100,7 @@ float across_seam(float d, bool periodic) {
 }  // namespace
 
 TextureCoordinates SurfaceSet::texture_coordinates(uint32_t surface, const Vec3f& p, const Vec3f& dx, const Vec3f& dy,
-                                                   const std::array<float, 8>& uv_to_st) const {
+                                                   const std::array<float, 8>& uv_to_st, float time) const {
   TextureCoordinates out;
   uint32_t i;
   Vec2f uv, dudx, dudy;  // (u, v) and its changes along dx and dy
@@ -117,7 +117,7 @@ TextureCoordinates SurfaceSet::texture_coordinates(uint32_t surface, const Vec3f
       return out;
     }
     case Kind::Triangle:
-      if (!triangles.parameters(i, p, dx, dy, uv, dudx, dudy)) return out;
+      if (!triangles.parameters(i, p, dx, dy, uv, dudx, dudy, time)) return out;
       break;
     case Kind::Sphere:
     case Kind::Quadric: {

@@ -47,6 +47,13 @@ struct SurfaceSet {
   std::vector<uint32_t> sphere_material, polygon_material, triangle_material, quadric_material;
 
   size_t size() const { return spheres.size() + polygons.size() + triangles.size() + quadrics.size(); }
+  // Motion blur: whether any surface moves during the shutter (only triangles do: tessellated
+  // surfaces and polygon meshes under a moving transform or with motion samples).
+  bool has_motion() const { return triangles.has_motion(); }
+  bool moving(uint32_t surface) const {
+    uint32_t i;
+    return triangles.has_motion() && locate(surface, i) == Kind::Triangle && triangles.moving(i);
+  }
   bool empty() const { return size() == 0; }
 
   // The kind of surface `surface` and its index among that kind.
@@ -65,8 +72,10 @@ struct SurfaceSet {
   // Nearest hit with t in (ray.tmin, ray.tmax). hit.ng is the surface's own normal, orientation
   // not applied (the caller applies Material::flip_normals and Sides).
   bool intersect(uint32_t surface, const Ray& ray, SurfaceHit& hit) const;
-  // The geometric normal (as intersect gives it) at p, a point on or next to the surface.
-  Vec3f geometric_normal(uint32_t surface, const Vec3f& p) const;
+  // The geometric normal (as intersect gives it) at p, a point on or next to the surface, where
+  // the surface is at shutter time `time` (as are the outline, shading normal and texture
+  // coordinates below: only moving triangles depend on it).
+  Vec3f geometric_normal(uint32_t surface, const Vec3f& p, float time = 0) const;
   // True for planar surfaces (polygons, triangles, disks): a ray leaving one cannot hit it again.
   bool is_flat(uint32_t surface) const {
     uint32_t i;
@@ -82,7 +91,7 @@ struct SurfaceSet {
   }
   // The outline of `surface` when it is planar and convex (every triangle; a polygon of one
   // convex loop with at most kMaxPolygonCorners corners); false for everything else.
-  bool convex_outline(uint32_t surface, ConvexOutline& out) const;
+  bool convex_outline(uint32_t surface, ConvexOutline& out, float time = 0) const;
   // The ball `surface` is, when it is a whole sphere placed by a similarity (Sphere::whole_ball);
   // false for everything else.
   bool whole_ball(uint32_t surface, Vec3d& centre, double& radius) const {
@@ -93,14 +102,14 @@ struct SurfaceSet {
   // of one surface, each its own request, meet without a seam); kNoLayer for a surface on its own.
   uint32_t layer(uint32_t surface) const;
   // The normal shading uses at p: the geometric one, except on triangles with vertex normals.
-  Vec3f shading_normal(uint32_t surface, const Vec3f& p) const;
+  Vec3f shading_normal(uint32_t surface, const Vec3f& p, float time = 0) const;
   // The texture coordinates at p (a point on the surface) and their changes along the
   // footprint axes dx, dy. Parametric surfaces (spheres, quadrics, and patches and NURBS through
   // their triangles) map their (u, v) through `uv_to_st` (RI TextureCoordinates: the (s, t) of
   // the corners (0,0), (1,0), (0,1), (1,1), bilinear between them); polygons give the st of their
   // corners (PolygonShape::has_st); everything else s = t = 0.
   TextureCoordinates texture_coordinates(uint32_t surface, const Vec3f& p, const Vec3f& dx, const Vec3f& dy,
-                                         const std::array<float, 8>& uv_to_st) const;
+                                         const std::array<float, 8>& uv_to_st, float time = 0) const;
 };
 
 }  // namespace darc

@@ -52,20 +52,140 @@ size_t TriangleStore::add(const TriangleMeshData& world, std::optional<uint32_t>
   // parallel (the flags say which triangles use them).
   if (!N_.empty()) N_.resize(P_.size(), Vec3f{});
   if (!uv_.empty()) uv_.resize(P_.size(), Vec2f{});
+  if (!vertex_motion_.empty()) vertex_motion_.resize(P_.size(), kStaticVertex);
   ++meshes_;
   return kept;
+}
+
+size_t TriangleStore::add_moving(std::span<const float> times, std::span<const TriangleMeshData> keys,
+                                std::optional<uint32_t> layer) {
+  if (keys.empty()) return 0;
+  const TriangleMeshData& first = keys.front();
+  const size_t n = first.P.size();
+  const bool still = std::all_of(keys.begin(), keys.end(), [&](const TriangleMeshData& k) {
+    return k.P.size() == n && std::equal(k.P.begin(), k.P.end(), first.P.begin(), [](const Vec3f& a, const Vec3f& b) {
+             return a.x == b.x && a.y == b.y && a.z == b.z;
+           });
+  });
+  if (still || times.size() != keys.size()) return add(first, layer);
+  // Triangles with a corner beyond the float range at any key are dropped here; add() drops the
+  // ones that are degenerate or non-finite at shutter open.
+  TriangleMeshData kept = first;
+  kept.indices.clear();
+  for (size_t t = 0; t + 2 < first.indices.size(); t += 3) {
+    bool finite_everywhere = true;
+    for (const TriangleMeshData& key : keys)
+      for (size_t k = 0; k < 3; ++k) {
+        const uint32_t v = first.indices[t + k];
+        finite_everywhere = finite_everywhere && v < n && key.P.size() == n && finite(key.P[v]);
+      }
+    if (finite_everywhere) kept.indices.insert(kept.indices.end(), first.indices.begin() + long(t), first.indices.begin() + long(t + 3));
+  }
+  const uint32_t base = uint32_t(P_.size());
+  const size_t added = add(kept, layer);
+  MeshMotion motion;
+  motion.times = uint32_t(motion_times_.size());
+  motion.keys = uint32_t(keys.size());
+  motion.first_vertex = base;
+  motion.count = uint32_t(n);
+  motion.positions = motion_P_.size();
+  motion.normals = first.N.size() == n;
+  motion_times_.insert(motion_times_.end(), times.begin(), times.end());
+  for (const TriangleMeshData& key : keys) motion_P_.insert(motion_P_.end(), key.P.begin(), key.P.end());
+  if (motion.normals) {
+    motion_N_.resize(motion.positions, Vec3f{});
+    for (const TriangleMeshData& key : keys) {
+      if (key.N.size() == n) {
+        motion_N_.insert(motion_N_.end(), key.N.begin(), key.N.end());
+      } else {
+        motion_N_.insert(motion_N_.end(), first.N.begin(), first.N.end());
+      }
+    }
+  }
+  vertex_motion_.resize(base, kStaticVertex);
+  vertex_motion_.resize(P_.size(), uint32_t(motions_.size()));
+  motions_.push_back(motion);
+  return added;
+}
+
+namespace {
+
+// The key interval holding `time` (clamped to [0, 1]) among keys times[0..count) (0 first, 1
+// last): the interval's first key and the fraction through it.
+void key_interval(const float* times, uint32_t count, float time, uint32_t& k, float& s) {
+  time = std::clamp(time, 0.0f, 1.0f);
+  k = 0;
+  while (k + 2 < count && times[k + 1] <= time) ++k;
+  const float span = times[k + 1] - times[k];
+  s = span > 0 ? std::clamp((time - times[k]) / span, 0.0f, 1.0f) : 0.0f;
+}
+
+}  // namespace
+
+bool TriangleStore::moving(uint32_t triangle) const {
+  if (vertex_motion_.empty()) return false;
+  const uint32_t* c = &corners_[3 * size_t(triangle)];
+  return vertex_motion_[c[0]] != kStaticVertex || vertex_motion_[c[1]] != kStaticVertex ||
+         vertex_motion_[c[2]] != kStaticVertex;
+}
+
+Vec3f TriangleStore::vertex_at(uint32_t v, float time) const {
+  if (vertex_motion_.empty() || vertex_motion_[v] == kStaticVertex) return P_[v];
+  const MeshMotion& m = motions_[vertex_motion_[v]];
+  uint32_t k;
+  float s;
+  key_interval(&motion_times_[m.times], m.keys, time, k, s);
+  const size_t i = m.positions + size_t(k) * m.count + (v - m.first_vertex);
+  const Vec3f& a = motion_P_[i];
+  const Vec3f& b = motion_P_[i + m.count];
+  return s == 0.0f ? a : s == 1.0f ? b : a + (b - a) * s;
+}
+
+Vec3f TriangleStore::normal_at(uint32_t v, float time) const {
+  if (vertex_motion_.empty() || vertex_motion_[v] == kStaticVertex) return N_[v];
+  const MeshMotion& m = motions_[vertex_motion_[v]];
+  if (!m.normals) return N_[v];
+  uint32_t k;
+  float s;
+  key_interval(&motion_times_[m.times], m.keys, time, k, s);
+  const size_t i = m.positions + size_t(k) * m.count + (v - m.first_vertex);
+  const Vec3f n = motion_N_[i] + (motion_N_[i + m.count] - motion_N_[i]) * s;
+  const float len = length(n);
+  return len > 0 ? n / len : motion_N_[i];
+}
+
+Vec3f TriangleStore::face_normal(uint32_t triangle, float time) const {
+  if (!moving(triangle)) return face_normal_[triangle];
+  const Vec3d a(corner(triangle, 0, time));
+  const Vec3d normal = cross(Vec3d(corner(triangle, 1, time)) - a, Vec3d(corner(triangle, 2, time)) - a);
+  const double len = length(normal);
+  // Degenerate at this time (a triangle that collapses mid-shutter): the normal at open.
+  return len > 0 && std::isfinite(len) ? Vec3f(normal / len) : face_normal_[triangle];
 }
 
 BBox TriangleStore::bounds(uint32_t triangle) const {
   BBox box;
   for (int k = 0; k < 3; ++k) box.extend(P_[corners_[3 * triangle + k]]);
+  if (moving(triangle)) {
+    // Vertices move linearly between keys: the keys' corners bound the whole shutter.
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = corners_[3 * triangle + k];
+      if (vertex_motion_[v] == kStaticVertex) continue;
+      const MeshMotion& m = motions_[vertex_motion_[v]];
+      for (uint32_t key = 0; key < m.keys; ++key)
+        box.extend(motion_P_[m.positions + size_t(key) * m.count + (v - m.first_vertex)]);
+    }
+  }
   const float pad = kBoundsRelativePadding * max_component(max(abs(box.lo), abs(box.hi)));
   return box.expanded(pad);
 }
 
 bool TriangleStore::intersect(uint32_t triangle, const Ray& ray, SurfaceHit& hit) const {
   const uint32_t* c = &corners_[3 * size_t(triangle)];
-  const Vec3d a(P_[c[0]]), e1 = Vec3d(P_[c[1]]) - a, e2 = Vec3d(P_[c[2]]) - a;
+  const bool moves = moving(triangle);
+  const Vec3d a(moves ? vertex_at(c[0], ray.time) : P_[c[0]]);
+  const Vec3d e1 = Vec3d(moves ? vertex_at(c[1], ray.time) : P_[c[1]]) - a;
+  const Vec3d e2 = Vec3d(moves ? vertex_at(c[2], ray.time) : P_[c[2]]) - a;
   const Vec3d d(ray.d), o(ray.o);
   const Vec3d pvec = cross(d, e2);
   const double det = dot(e1, pvec);
@@ -81,7 +201,7 @@ bool TriangleStore::intersect(uint32_t triangle, const Ray& ray, SurfaceHit& hit
   if (!(t > double(ray.tmin) && t < double(ray.tmax))) return false;
   hit.t = float(t);
   hit.p = Vec3f(o + d * t);
-  hit.ng = face_normal_[triangle];
+  hit.ng = moves ? face_normal(triangle, ray.time) : face_normal_[triangle];
   if (!uv_.empty()) {
     const Vec2f& ua = uv_[c[0]];
     const Vec2f& ub = uv_[c[1]];
@@ -96,9 +216,9 @@ bool TriangleStore::intersect(uint32_t triangle, const Ray& ray, SurfaceHit& hit
   return true;
 }
 
-Vec2f TriangleStore::plane_coordinates(uint32_t triangle, const Vec3f& w_from_a, bool clamp) const {
-  const uint32_t* c = &corners_[3 * size_t(triangle)];
-  const Vec3d a(P_[c[0]]), e1 = Vec3d(P_[c[1]]) - a, e2 = Vec3d(P_[c[2]]) - a, w(w_from_a);
+Vec2f TriangleStore::plane_coordinates(uint32_t triangle, const Vec3f& w_from_a, bool clamp, float time) const {
+  const Vec3d a(corner(triangle, 0, time)), e1 = Vec3d(corner(triangle, 1, time)) - a,
+      e2 = Vec3d(corner(triangle, 2, time)) - a, w(w_from_a);
   // Least squares in the plane: [e1 e2] (b1, b2) ~ w.
   const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
   const double r1 = dot(w, e1), r2 = dot(w, e2);
@@ -112,12 +232,12 @@ Vec2f TriangleStore::plane_coordinates(uint32_t triangle, const Vec3f& w_from_a,
   return {float(b1), float(b2)};
 }
 
-Vec2f TriangleStore::barycentric(uint32_t triangle, const Vec3f& p) const {
-  return plane_coordinates(triangle, p - P_[corners_[3 * size_t(triangle)]], true);
+Vec2f TriangleStore::barycentric(uint32_t triangle, const Vec3f& p, float time) const {
+  return plane_coordinates(triangle, p - corner(triangle, 0, time), true, time);
 }
 
 bool TriangleStore::parameters(uint32_t triangle, const Vec3f& p, const Vec3f& dx, const Vec3f& dy, Vec2f& uv,
-                               Vec2f& duv_dx, Vec2f& duv_dy) const {
+                               Vec2f& duv_dx, Vec2f& duv_dy, float time) const {
   if (!(smooth_[triangle] & kHasParameters)) return false;
   const uint32_t* c = &corners_[3 * size_t(triangle)];
   const Vec2f a = uv_[c[0]], b = uv_[c[1]], cc = uv_[c[2]];
@@ -126,19 +246,19 @@ bool TriangleStore::parameters(uint32_t triangle, const Vec3f& p, const Vec3f& d
   auto along = [&](const Vec2f& w) {
     return Vec2f{(b.x - a.x) * w.x + (cc.x - a.x) * w.y, (b.y - a.y) * w.x + (cc.y - a.y) * w.y};
   };
-  const Vec2f at = along(barycentric(triangle, p));
+  const Vec2f at = along(barycentric(triangle, p, time));
   uv = {a.x + at.x, a.y + at.y};
-  duv_dx = along(plane_coordinates(triangle, dx, false));
-  duv_dy = along(plane_coordinates(triangle, dy, false));
+  duv_dx = along(plane_coordinates(triangle, dx, false, time));
+  duv_dy = along(plane_coordinates(triangle, dy, false, time));
   return true;
 }
 
-Vec3f TriangleStore::shading_normal(uint32_t triangle, const Vec3f& p) const {
-  const Vec3f ng = face_normal_[triangle];
+Vec3f TriangleStore::shading_normal(uint32_t triangle, const Vec3f& p, float time) const {
+  const Vec3f ng = face_normal(triangle, time);
   if (!(smooth_[triangle] & kHasNormals)) return ng;
   const uint32_t* c = &corners_[3 * size_t(triangle)];
-  const Vec2f b = barycentric(triangle, p);
-  const Vec3f n = N_[c[0]] * (1.0f - b.x - b.y) + N_[c[1]] * b.x + N_[c[2]] * b.y;
+  const Vec2f b = barycentric(triangle, p, time);
+  const Vec3f n = normal_at(c[0], time) * (1.0f - b.x - b.y) + normal_at(c[1], time) * b.x + normal_at(c[2], time) * b.y;
   const float len = length(n);
   if (!(len > 0)) return ng;
   const Vec3f unit = n / len;
@@ -149,7 +269,9 @@ Vec3f TriangleStore::shading_normal(uint32_t triangle, const Vec3f& p) const {
 size_t TriangleStore::memory_bytes() const {
   return P_.capacity() * sizeof(Vec3f) + N_.capacity() * sizeof(Vec3f) + uv_.capacity() * sizeof(Vec2f) +
          corners_.capacity() * sizeof(uint32_t) + face_normal_.capacity() * sizeof(Vec3f) + smooth_.capacity() +
-         layer_.capacity() * sizeof(uint32_t);
+         layer_.capacity() * sizeof(uint32_t) + vertex_motion_.capacity() * sizeof(uint32_t) +
+         motions_.capacity() * sizeof(MeshMotion) + motion_times_.capacity() * sizeof(float) +
+         (motion_P_.capacity() + motion_N_.capacity()) * sizeof(Vec3f);
 }
 
 }  // namespace darc

@@ -169,11 +169,17 @@ void SceneBuilder::start_scene(const SourceLoc& loc) {
     light_handles_[pl.handle] = idx;
     attributes_.lights_on.push_back(idx);
   }
-  if (!ctm_keys_.empty())
-    diag_.warning_once("camera motion", loc, "WorldBegin",
-                       "a moving camera (a motion block before WorldBegin) is not supported: the camera at shutter "
-                       "open is used");
-  set_ctm(Matrix4{});
+  // A moving camera: rendered from where it is at shutter open, while the world moves by
+  // W2C(t) W2C(open)^-1, which puts every point where the camera at t sees it. Keys that are
+  // all the same (exporters write a still camera's block too) move nothing.
+  world_keys_.clear();
+  if (motion_blur() && ctm_keys_.size() > 1) {
+    const bool still = std::all_of(ctm_keys_.begin(), ctm_keys_.end(),
+                                   [&](const TransformKey& k) { return k.m.m == ctm_keys_.front().m.m; });
+    if (!still)
+      for (const TransformKey& k : ctm_keys_) world_keys_.push_back({k.time, k.m * cam.camera_to_world});
+  }
+  set_world_relative_ctm(Matrix4{});
   next_strand_id_ = 0;
 }
 
@@ -276,6 +282,13 @@ void SceneBuilder::set_ctm(const Matrix4& m) {
   ctm_keys_.clear();
 }
 
+void SceneBuilder::set_world_relative_ctm(const Matrix4& m) {
+  set_ctm(m);
+  if (!in_world_ || world_keys_.empty()) return;
+  for (const TransformKey& k : world_keys_) ctm_keys_.push_back({k.time, m * k.m});
+  ctm_ = transform_at(ctm_keys_, options_.output.shutter_open);
+}
+
 void SceneBuilder::concat(const Matrix4& m) {
   // Each factor is finite (the lexer refuses anything else), but repeated large ones can overflow
   // the product: every point would then be infinite or NaN.
@@ -296,14 +309,14 @@ void SceneBuilder::identity(const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.identity(loc); })) return;
   // Inside the world block, Identity means world space (Aqsis, PRMan).
   if (transform_sample("Identity", Matrix4{}, true, loc)) return;
-  set_ctm(Matrix4{});
+  set_world_relative_ctm(Matrix4{});
 }
 
 void SceneBuilder::transform(const std::array<double, 16>& m, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.transform(m, loc); })) return;
   const Matrix4 matrix = Matrix4::from_row_major(m.data());
   if (transform_sample("Transform", matrix, true, loc)) return;
-  set_ctm(matrix);
+  set_world_relative_ctm(matrix);
 }
 
 void SceneBuilder::concat_transform(const std::array<double, 16>& m, const SourceLoc& loc) {
@@ -367,10 +380,16 @@ void SceneBuilder::coord_sys_transform(const std::string& name, const SourceLoc&
   if (record([=](SceneBuilder& b) { b.coord_sys_transform(name, loc); })) return;
   if (!in_world_) throw RibError("unknown coordinate system \"" + name + "\"");
   for (auto scoped = scoped_spaces_.rbegin(); scoped != scoped_spaces_.rend(); ++scoped)
-    if (scoped->name == name) return set_ctm(scoped->to_world);
+    if (scoped->name == name) return set_world_relative_ctm(scoped->to_world);
   auto it = named_spaces_.find(name);
   if (it == named_spaces_.end()) throw RibError("unknown coordinate system \"" + name + "\"");
-  set_ctm(it->second);
+  // Under a moving camera the world moves, and what is placed in a coordinate system of the world
+  // moves with it; camera space stays with the camera the image is rendered from.
+  if (name == "camera") {
+    set_ctm(it->second);
+  } else {
+    set_world_relative_ctm(it->second);
+  }
 }
 
 // ---------------------------------------------------------------- attributes

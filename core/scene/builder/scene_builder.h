@@ -159,11 +159,25 @@ class SceneBuilder : public RiTarget {
   // `material` (from make_material). Returns how many triangles were kept (degenerate ones and
   // those beyond the float range in world space are dropped); false from reserve_frame_memory
   // adds nothing.
-  size_t add_triangle_mesh(const TriangleMeshData& object_space, uint32_t material);
-  // The common body of the four polygon requests.
+  // With motion blur on and a moving transform or motion samples (`samples`: the mesh's "P" at
+  // RIB times, as many points as object_space.P), the mesh moves (TriangleStore::add_moving).
+  struct PositionSample;
+  size_t add_triangle_mesh(const TriangleMeshData& object_space, uint32_t material,
+                           const std::vector<PositionSample>* samples = nullptr);
+  // The four polygon requests: a sample of a motion block (built at MotionEnd) or add_polygons.
+  void polygons_request(const char* request, const std::vector<int>& nloops_per_face,
+                        const std::vector<int>& nverts_per_loop, const std::vector<int>& indices,
+                        const ParamList& params, const SourceLoc& loc);
+  // The common body of the four polygon requests; `samples`: the positions at a motion block's
+  // times (empty: the request's own "P").
   void add_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                     const std::vector<int>& indices, const ParamList& params, const char* request,
-                    const SourceLoc& loc);
+                    const SourceLoc& loc, const std::vector<PositionSample>* samples = nullptr);
+  // Moving polygons become a moving triangle mesh (each face a fan): false, adding nothing, when a
+  // face has holes or is not convex (the caller then builds them at shutter open, warned).
+  bool add_moving_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
+                           const std::vector<int>& indices, const std::vector<float>& P, uint32_t material,
+                           const std::vector<PositionSample>& samples);
   // The ray-tracing conventions (scene_builder_ray_tracing.cpp). One parameter of an Attribute
   // "light", "visibility" or "render" request:
   void ray_tracing_attribute(const std::string& category, const Param& param, const SourceLoc& loc);
@@ -191,15 +205,26 @@ class SceneBuilder : public RiTarget {
   struct MotionBlock;
   void end_transform_motion(const MotionBlock& block);
   void end_curves_motion(const MotionBlock& block);
+  void end_polygons_motion(const MotionBlock& block);
   // Whether the shutter is open for a while (Shutter open < close): then things move.
   bool motion_blur() const { return options_.output.shutter_close > options_.output.shutter_open; }
   // The current transform at RIB time t.
   Matrix4 ctm_at(double t) const { return ctm_keys_.empty() ? ctm_ : transform_at(ctm_keys_, t); }
+  // Sets the current transform to m relative to the world (Identity, Transform inside the world):
+  // under a moving camera, it moves with the world (world_keys_).
+  void set_world_relative_ctm(const Matrix4& m);
   // One Curves call's shape at its motion samples: RIB time and its "P" (or "Pw").
   struct PositionSample {
     double time;
     std::vector<float> P;
   };
+  // The positions at RIB time t of the samples (linear between them, held beyond the first and
+  // last).
+  static std::vector<float> positions_at(const std::vector<PositionSample>& samples, double t);
+  // The RIB times at which something built now gets motion keys: shutter open and close, the
+  // samples' times and the moving transform's keys between, and more where the transform turns
+  // the object-space points P (xyz).
+  std::vector<double> motion_key_times(const std::vector<PositionSample>& samples, const std::vector<float>& P) const;
   // Key times with more keys where the moving transform turns the points P (object space).
   std::vector<double> refine_turning_keys(const std::vector<double>& times, const std::vector<float>& P) const;
   // Curves with its positions at motion samples (empty: the call's own "P", not moving unless the
@@ -224,6 +249,10 @@ class SceneBuilder : public RiTarget {
   // transform at shutter open, which everything that does not move uses.
   std::vector<TransformKey> ctm_keys_;
   std::vector<std::vector<TransformKey>> saved_ctm_keys_;
+  // A moving camera (a motion block before WorldBegin, shutter open): the image is rendered from
+  // the camera at shutter open, and the world moves instead, by W2C(t) W2C(open)^-1 at RIB time
+  // t; these are its keys (empty: the camera does not move).
+  std::vector<TransformKey> world_keys_;
   std::vector<Block> blocks_;
   std::vector<SourceLoc> block_locs_;
 
@@ -318,6 +347,13 @@ class SceneBuilder : public RiTarget {
       SourceLoc loc;
     };
     std::vector<CurvesSample> curves;  // Curves samples
+    struct PolygonsSample {
+      std::string request;
+      std::vector<int> nloops, nverts, indices;
+      ParamList params;
+      SourceLoc loc;
+    };
+    std::vector<PolygonsSample> polygons;  // Polygon, GeneralPolygon, PointsPolygons, ... samples
   };
   std::optional<MotionBlock> motion_;
 };

@@ -303,19 +303,8 @@ void SceneBuilder::build_curves(const std::string& type, const std::vector<int>&
   in.P = read_points(params, "Curves");
   // Samples of a motion block: the shape at shutter open (at times outside the samples', the
   // nearest sample's).
-  auto positions_at = [&](double t) {
-    if (samples.empty()) return in.P;
-    size_t k = 1;
-    while (k < samples.size() && samples[k].time < t) ++k;
-    if (k == samples.size() || t <= samples.front().time) return t <= samples.front().time ? samples.front().P : samples.back().P;
-    const PositionSample &a = samples[k - 1], &b = samples[k];
-    const float s = float((t - a.time) / (b.time - a.time));
-    std::vector<float> P(a.P.size());
-    for (size_t i = 0; i < P.size(); ++i) P[i] = (1 - s) * a.P[i] + s * b.P[i];
-    return P;
-  };
   const double open = options_.output.shutter_open, close = options_.output.shutter_close;
-  if (!samples.empty()) in.P = positions_at(open);
+  if (!samples.empty()) in.P = positions_at(samples, open);
   in.p_components = 3;
   in.width = primvar(params, "width", 1);
   if (const Param* cw = params.find("constantwidth")) {
@@ -344,20 +333,13 @@ void SceneBuilder::build_curves(const std::string& type, const std::vector<int>&
   if (clamps.constant_width < 0) in.constantwidth = 0.0f;
   uint32_t material = make_material(loc);
   if (moves) {
-    // Keys at shutter open and close and at every sample or transform key between.
-    std::vector<double> times{open, close};
-    for (const PositionSample& p : samples)
-      if (p.time > open && p.time < close) times.push_back(p.time);
-    for (const TransformKey& k : ctm_keys_)
-      if (k.time > open && k.time < close) times.push_back(k.time);
-    times = merge_times(times, {});
-    if (!ctm_keys_.empty()) times = refine_turning_keys(times, in.P);
+    const std::vector<double> times = motion_key_times(samples, in.P);
     std::vector<CurveSet> keys(times.size());
     std::vector<float> key_times(times.size());
     uint32_t strands = 0;
     for (size_t k = 0; k < times.size(); ++k) {
       CurvesInput at = in;
-      if (k > 0) at.P = positions_at(times[k]);
+      if (k > 0 && !samples.empty()) at.P = positions_at(samples, times[k]);
       at.object_to_world = ctm_at(times[k]);
       uint32_t key_strands = 0;
       const CurvesAppended appended = append_curves(keys[k], at, material, key_strands);
@@ -398,18 +380,16 @@ void SceneBuilder::build_curves(const std::string& type, const std::vector<int>&
 
 void SceneBuilder::polygon(const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.polygon(params, loc); })) return;
-  if (skip_motion_sample("Polygon")) return;
   std::vector<float> P = read_points(params, "Polygon");
   if (P.size() < 9) throw RibError("a polygon needs at least 3 vertices, found " + std::to_string(P.size() / 3));
   std::vector<int> indices(P.size() / 3);
   for (size_t i = 0; i < indices.size(); ++i) indices[i] = int(i);
-  add_polygons({1}, {int(indices.size())}, indices, params, "Polygon", loc);
+  polygons_request("Polygon", {1}, {int(indices.size())}, indices, params, loc);
 }
 
 void SceneBuilder::general_polygon(const std::vector<int>& nverts_per_loop, const ParamList& params,
                                    const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.general_polygon(nverts_per_loop, params, loc); })) return;
-  if (skip_motion_sample("GeneralPolygon")) return;
   size_t total = 0;
   for (int n : nverts_per_loop) {
     if (n < 3) throw RibError("each loop needs at least 3 vertices, found " + std::to_string(n));
@@ -425,15 +405,14 @@ void SceneBuilder::general_polygon(const std::vector<int>& nverts_per_loop, cons
   if (total < points) throw RibError(fmt::format("the loops have {} vertices but {} points are given", total, points));
   std::vector<int> indices(total);
   for (size_t i = 0; i < total; ++i) indices[i] = int(i);
-  add_polygons({int(nverts_per_loop.size())}, nverts_per_loop, indices, params, "GeneralPolygon", loc);
+  polygons_request("GeneralPolygon", {int(nverts_per_loop.size())}, nverts_per_loop, indices, params, loc);
 }
 
 void SceneBuilder::points_polygons(const std::vector<int>& nverts_per_face, const std::vector<int>& indices,
                                    const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.points_polygons(nverts_per_face, indices, params, loc); })) return;
-  if (skip_motion_sample("PointsPolygons")) return;
   std::vector<int> loops(nverts_per_face.size(), 1);
-  add_polygons(loops, nverts_per_face, indices, params, "PointsPolygons", loc);
+  polygons_request("PointsPolygons", loops, nverts_per_face, indices, params, loc);
 }
 
 void SceneBuilder::points_general_polygons(const std::vector<int>& nloops_per_face,
@@ -441,17 +420,25 @@ void SceneBuilder::points_general_polygons(const std::vector<int>& nloops_per_fa
                                            const ParamList& params, const SourceLoc& loc) {
   if (record([=](SceneBuilder& b) { b.points_general_polygons(nloops_per_face, nverts_per_loop, indices, params, loc); }))
     return;
-  if (skip_motion_sample("PointsGeneralPolygons")) return;
-  add_polygons(nloops_per_face, nverts_per_loop, indices, params, "PointsGeneralPolygons", loc);
+  polygons_request("PointsGeneralPolygons", nloops_per_face, nverts_per_loop, indices, params, loc);
 }
 
 void SceneBuilder::add_polygons(const std::vector<int>& nloops_per_face, const std::vector<int>& nverts_per_loop,
                                 const std::vector<int>& indices, const ParamList& params, const char* request,
-                                const SourceLoc& loc) {
+                                const SourceLoc& loc, const std::vector<PositionSample>* samples) {
   if (!building_geometry(request, loc)) return;
-  note_geometry(replayed_id());
+  const bool moves = motion_blur() && ((samples && samples->size() > 1) || !ctm_keys_.empty());
+  note_geometry(moves ? 0 : replayed_id());
   if (!reserve_frame_memory(0, nloops_per_face.size(), indices.size())) return;
   std::vector<float> P = read_points(params, request);
+  if (samples && !samples->empty()) P = positions_at(*samples, options_.output.shutter_open);
+  if (moves) {
+    const std::vector<PositionSample> none;
+    if (add_moving_polygons(nloops_per_face, nverts_per_loop, indices, P, make_material(loc), samples ? *samples : none))
+      return;
+    diag_.warning_once("motion:polygons", loc, request,
+                       "motion blur of polygons with holes or concave faces is not supported: built at shutter open");
+  }
   std::vector<Vec3f> world(P.size() / 3);
   size_t beyond_float_range = 0;
   for (size_t i = 0; i < world.size(); ++i) {
@@ -518,6 +505,45 @@ void SceneBuilder::end_curves_motion(const MotionBlock& block) {
     build_curves(first.type, first.nvertices, first.wrap, first.params, samples, first.loc);
   } catch (const RibError& e) {
     diag_.error(first.loc, "Curves", e.what());
+  }
+}
+
+// A motion block of polygons: the samples must be one mesh at each time (the same faces, loops
+// and indices, as many points), of which only the positions move.
+void SceneBuilder::end_polygons_motion(const MotionBlock& block) {
+  const auto& first = block.polygons.front();
+  std::vector<PositionSample> samples;
+  for (size_t k = 0; k < block.polygons.size(); ++k) {
+    const auto& p = block.polygons[k];
+    if (p.nloops != first.nloops || p.nverts != first.nverts || p.indices != first.indices) {
+      diag_.error(p.loc, p.request,
+                  fmt::format("motion sample {} is not the same mesh as the first (faces, loops and vertex indices "
+                              "must agree): the first sample is built without motion blur",
+                              k + 1));
+      samples.clear();
+      break;
+    }
+    try {
+      samples.push_back({block.times[k], read_points(p.params, p.request.c_str())});
+    } catch (const RibError& e) {
+      diag_.error(p.loc, p.request, e.what());
+      samples.clear();
+      break;
+    }
+    if (samples.back().P.size() != samples.front().P.size()) {
+      diag_.error(p.loc, p.request,
+                  fmt::format("motion sample {} has {} points where the first has {}: the first sample is built "
+                              "without motion blur",
+                              k + 1, samples.back().P.size() / 3, samples.front().P.size() / 3));
+      samples.clear();
+      break;
+    }
+  }
+  try {
+    add_polygons(first.nloops, first.nverts, first.indices, first.params, first.request.c_str(), first.loc,
+                 samples.size() > 1 ? &samples : nullptr);
+  } catch (const RibError& e) {
+    diag_.error(first.loc, first.request, e.what());
   }
 }
 

@@ -52,7 +52,19 @@ void SceneBuilder::primitive(const PrimitiveRequest& request, const ParamList& p
   if (record([=](SceneBuilder& b) { b.primitive(request, params, loc); })) return;
   if (skip_motion_sample(request.name)) return;
   if (!building_geometry(request.name.c_str(), loc)) return;
-  note_geometry(replayed_id());
+  // Geometry under a moving transform is not the same from frame to frame however its requests
+  // are replayed.
+  const bool moving_transform = motion_blur() && !ctm_keys_.empty();
+  note_geometry(moving_transform ? 0 : replayed_id());
+  // Tessellated surfaces (patches, NURBS, subdivision meshes) move with their transform; the
+  // quadrics and points do not.
+  const bool tessellated = request.name == "SubdivisionMesh" || request.name == "Patch" ||
+                           request.name == "PatchMesh" || request.name == "NuPatch";
+  if (moving_transform && !tessellated)
+    diag_.warning_once("motion:transform " + request.name, loc, request.name,
+                       fmt::format("motion blur of {} under a moving transform is not supported: built where the "
+                                   "transform is at shutter open",
+                                   request.name));
   (this->*builder)(request, params, loc);
 }
 
@@ -70,23 +82,60 @@ void SceneBuilder::add_sphere(const PrimitiveRequest& r, const ParamList&, const
   scene_->surfaces.sphere_material.push_back(make_material(loc));
 }
 
-size_t SceneBuilder::add_triangle_mesh(const TriangleMeshData& object_space, uint32_t material) {
-  if (!reserve_frame_memory(0, object_space.triangle_count(), object_space.P.size())) return 0;
+namespace {
+
+// The mesh moved by object_to_world: positions, and normals by the inverse transpose.
+TriangleMeshData mesh_in_world(const TriangleMeshData& object_space, const Matrix4& object_to_world) {
   TriangleMeshData world;
   world.P.reserve(object_space.P.size());
-  for (const Vec3f& p : object_space.P) world.P.push_back(Vec3f(ctm_.transform_point(Vec3d(p))));
-  // Normals go by the inverse transpose. The faces are wound in world space, as the polygons'
-  // Newell normals are, so that Orientation acts on both alike; the store keeps each vertex
-  // normal on its face's side (a mirroring transform reverses the winding's normal).
+  for (const Vec3f& p : object_space.P) world.P.push_back(Vec3f(object_to_world.transform_point(Vec3d(p))));
+  // The faces are wound in world space, as the polygons' Newell normals are, so that Orientation
+  // acts on both alike; the store keeps each vertex normal on its face's side (a mirroring
+  // transform reverses the winding's normal).
   Matrix4 world_to_object;
-  if (!object_space.N.empty() && ctm_.inverse(world_to_object)) {
+  if (!object_space.N.empty() && object_to_world.inverse(world_to_object)) {
     world.N.reserve(object_space.N.size());
     for (const Vec3f& n : object_space.N)
       world.N.push_back(Vec3f(normalize(world_to_object.transform_normal_by_inverse(Vec3d(n)))));
   }
   world.uv = object_space.uv;
   world.indices = object_space.indices;
-  const size_t kept = scene_->surfaces.triangles.add(world, material);
+  return world;
+}
+
+}  // namespace
+
+size_t SceneBuilder::add_triangle_mesh(const TriangleMeshData& object_space, uint32_t material,
+                                       const std::vector<PositionSample>* samples) {
+  const bool moves = motion_blur() && ((samples && samples->size() > 1) || !ctm_keys_.empty());
+  size_t kept = 0;
+  if (!moves) {
+    if (!reserve_frame_memory(0, object_space.triangle_count(), object_space.P.size())) return 0;
+    kept = scene_->surfaces.triangles.add(mesh_in_world(object_space, ctm_), material);
+  } else {
+    // Keys at shutter open and close and at every sample or transform key between: the mesh
+    // with the samples' positions at that time, moved by the transform then.
+    std::vector<float> flat;
+    flat.reserve(3 * object_space.P.size());
+    for (const Vec3f& p : object_space.P) flat.insert(flat.end(), {p.x, p.y, p.z});
+    const std::vector<PositionSample> none;
+    const std::vector<PositionSample>& given = samples ? *samples : none;
+    const std::vector<double> times = motion_key_times(given, flat);
+    if (!reserve_frame_memory(0, object_space.triangle_count(), object_space.P.size() * times.size())) return 0;
+    const double open = options_.output.shutter_open, close = options_.output.shutter_close;
+    std::vector<TriangleMeshData> keys;
+    std::vector<float> key_times;
+    for (double t : times) {
+      TriangleMeshData at = object_space;
+      if (!given.empty()) {
+        const std::vector<float> P = positions_at(given, t);
+        for (size_t i = 0; i < at.P.size() && 3 * i + 2 < P.size(); ++i) at.P[i] = {P[3 * i], P[3 * i + 1], P[3 * i + 2]};
+      }
+      keys.push_back(mesh_in_world(at, ctm_at(t)));
+      key_times.push_back(float((t - open) / (close - open)));
+    }
+    kept = scene_->surfaces.triangles.add_moving(key_times, keys, material);
+  }
   scene_->surfaces.triangle_material.resize(scene_->surfaces.triangles.size(), material);
   return kept;
 }

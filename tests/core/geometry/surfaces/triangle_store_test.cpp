@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace darc {
 namespace {
@@ -127,6 +128,57 @@ TEST(SurfaceSet, DispatchesByIndexInKindOrder) {
   EXPECT_EQ(set.geometric_normal(3, {0.2f, 0.7f, 0}), (Vec3f{0, 0, 1}));
   const BBox b = set.bounds(1);
   EXPECT_GE(b.hi.x, 6.0f);
+}
+
+// The unit square at shutter open, tilted and moved by +2 in x at close.
+std::vector<TriangleMeshData> moving_square() {
+  TriangleMeshData close = unit_square();
+  for (Vec3f& p : close.P) p = {p.x + 2, p.y, p.x};  // moved, and tilted about the y axis
+  return {unit_square(), close};
+}
+
+TEST(TriangleStore, AMovingMeshIsWhereItsKeysPutItAtTheRaysTime) {
+  TriangleStore store;
+  const std::vector<float> times{0, 1};
+  const std::vector<TriangleMeshData> keys = moving_square();
+  ASSERT_EQ(store.add_moving(times, keys), 2u);
+  store.add(unit_square());  // a still mesh after it
+  ASSERT_TRUE(store.has_motion());
+  EXPECT_TRUE(store.moving(0));
+  EXPECT_FALSE(store.moving(2));
+  SurfaceHit h;
+  Ray ray = down_at(2.5f, 0.25f);
+  ray.time = 1.0f;
+  ASSERT_TRUE(store.intersect(0, ray, h));
+  EXPECT_FLOAT_EQ(h.t, 2.0f - 0.5f) << "the tilted square at x = 2.5 lies at z = 0.5";
+  EXPECT_NEAR(h.ng.x, -std::sqrt(0.5f), 1e-6f);
+  EXPECT_NEAR(h.ng.z, std::sqrt(0.5f), 1e-6f);
+  ray.time = 0.0f;
+  EXPECT_FALSE(store.intersect(0, ray, h));
+  ray = down_at(1.25f, 0.25f);
+  ray.time = 0.5f;
+  EXPECT_TRUE(store.intersect(0, ray, h)) << "half way";
+  // The box holds both keys; the still square's box is its own.
+  EXPECT_LE(store.bounds(0).lo.x, 0.0f);
+  EXPECT_GE(store.bounds(0).hi.x, 3.0f);
+  EXPECT_LE(store.bounds(2).hi.x, 1.0f + 1e-5f);
+  // Corners shared by the two triangles are bitwise the same at any time (watertight coverage).
+  for (float t : {0.0f, 0.3f, 0.77f, 1.0f}) {
+    EXPECT_EQ(store.corner(0, 0, t), store.corner(1, 0, t));
+    EXPECT_EQ(store.corner(0, 2, t), store.corner(1, 1, t));
+  }
+}
+
+TEST(TriangleStore, KeysThatAgreeMakeAStillMeshAndANonFiniteKeyDropsItsTriangles) {
+  TriangleStore still;
+  const std::vector<float> times{0, 1};
+  const std::vector<TriangleMeshData> same{unit_square(), unit_square()};
+  EXPECT_EQ(still.add_moving(times, same), 2u);
+  EXPECT_FALSE(still.has_motion());
+  TriangleStore broken;
+  std::vector<TriangleMeshData> keys = moving_square();
+  keys[1].P[3].x = std::numeric_limits<float>::infinity();  // the second triangle's corner
+  EXPECT_EQ(broken.add_moving(times, keys), 1u);
 }
 
 }  // namespace

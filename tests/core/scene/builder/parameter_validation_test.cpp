@@ -236,7 +236,31 @@ std::vector<Row> transform_rows() {
        }},
       {"motion-unsupported", "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd"),
        warning(3, "MotionBegin",
-               "motion blur of Sphere is not supported (Curves and transforms move): its first motion sample is used"),
+               "motion blur of Sphere is not supported (Curves, polygons and transforms move): its first motion sample is used"),
+       [](const Scene& s) { EXPECT_EQ(s.surfaces.spheres.size(), 1u); }},
+      {"motion-polygons-topology",
+       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nPointsPolygons [3] [0 1 2] \"P\" [0 0 0  1 0 0  0 1 0]\n"
+                                  "PointsPolygons [3] [0 2 1] \"P\" [0 0 0  1 0 0  0 1 0]\nMotionEnd"),
+       error(5, "PointsPolygons",
+             "motion sample 2 is not the same mesh as the first (faces, loops and vertex indices must agree): the "
+             "first sample is built without motion blur"),
+       [](const Scene& s) {
+         EXPECT_EQ(s.surfaces.polygons.size(), 1u);
+         EXPECT_FALSE(s.has_motion());
+       }},
+      {"motion-polygons-concave",
+       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nTranslate 0 0 0\nTranslate 1 0 0\nMotionEnd\n"
+                                  "Polygon \"P\" [0 0 0  2 0 0  1 0.5 0  2 2 0  0 2 0]"),
+       warning(7, "Polygon", "motion blur of polygons with holes or concave faces is not supported: built at shutter open"),
+       [](const Scene& s) {
+         EXPECT_EQ(s.surfaces.polygons.size(), 1u);
+         EXPECT_FALSE(s.has_motion());
+       }},
+      {"motion-transform-unsupported",
+       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nTranslate 0 0 0\nTranslate 1 0 0\nMotionEnd\nSphere 1 -1 1 360"),
+       warning(7, "Sphere",
+               "motion blur of Sphere under a moving transform is not supported: built where the transform is at "
+               "shutter open"),
        [](const Scene& s) { EXPECT_EQ(s.surfaces.spheres.size(), 1u); }},
       {"motion-blur", "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nTranslate 0 0 0\nTranslate 0 2 0\nMotionEnd\n" + kLine3),
        std::nullopt,

@@ -1,6 +1,8 @@
 // SceneBuilder's motion blocks: a moving transform and a deformation block give Curves keys at
 // shutter open and close (and the times between), a turning transform gets enough keys for its
 // arc, nested transforms compose over time, and a closed shutter builds the shape at its open time.
+// Polygons and tessellated surfaces move as triangles; a moving camera moves the world the other
+// way, and a camera block whose samples agree moves nothing.
 #include "support/scenes_from_rib.h"
 
 #include <gtest/gtest.h>
@@ -93,6 +95,91 @@ TEST(SceneBuilderMotion, AnObjectInstanceReplaysItsMotionBlock) {
   const CurveSet& cs = b.scenes.at(0).curves;
   ASSERT_TRUE(cs.moving(0));
   EXPECT_FLOAT_EQ(point_at(cs, 0, 1.0f, 0).y, 1.0f);
+}
+
+bool has_warning(const Built& b, const std::string& text) {
+  for (const Diagnostic& d : b.diagnostics)
+    if (d.severity == Severity::Warning && d.message.find(text) != std::string::npos) return true;
+  return false;
+}
+
+TEST(SceneBuilderMotion, APolygonDeformationBlockMovesItsTriangles) {
+  Built b = build_world("Shutter 0 1",
+                        "MotionBegin [0 1]\n"
+                        "PointsPolygons [4] [0 1 2 3] \"P\" [0 0 5  1 0 5  1 1 5  0 1 5]\n"
+                        "PointsPolygons [4] [0 1 2 3] \"P\" [0 0 5  3 0 5  3 1 5  0 1 5]\n"
+                        "MotionEnd\n");
+  const SurfaceSet& s = b.scenes.at(0).surfaces;
+  EXPECT_TRUE(s.polygons.empty()) << "a moving face is a fan of moving triangles";
+  ASSERT_EQ(s.triangles.size(), 2u);
+  ASSERT_TRUE(s.has_motion());
+  EXPECT_TRUE(s.triangles.moving(0));
+  EXPECT_FLOAT_EQ(s.triangles.corner(0, 1, 0.0f).x, 1.0f);
+  EXPECT_FLOAT_EQ(s.triangles.corner(0, 1, 0.5f).x, 2.0f);
+  EXPECT_FLOAT_EQ(s.triangles.corner(0, 1, 1.0f).x, 3.0f);
+  EXPECT_FLOAT_EQ(s.triangles.corner(0, 0, 1.0f).x, 0.0f) << "a corner that stays";
+  EXPECT_GE(s.triangles.bounds(0).hi.x, 3.0f) << "the box holds the whole shutter";
+  for (const Diagnostic& d : b.diagnostics) ADD_FAILURE() << d.str();
+}
+
+TEST(SceneBuilderMotion, APatchUnderAMovingTransformMoves) {
+  Built b = build_world("Shutter 0 1", "MotionBegin [0 1]\nTranslate 0 0 0\nTranslate 0 2 0\nMotionEnd\n"
+                                       "Patch \"bilinear\" \"P\" [0 0 5  1 0 5  0 1 5  1 1 5]\n");
+  const SurfaceSet& s = b.scenes.at(0).surfaces;
+  ASSERT_GT(s.triangles.size(), 0u);
+  ASSERT_TRUE(s.triangles.moving(0));
+  for (uint32_t t = 0; t < s.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_FLOAT_EQ(s.triangles.corner(t, k, 1.0f).y, s.triangles.corner(t, k, 0.0f).y + 2.0f);
+  // A ray at shutter close meets it where it has gone.
+  Ray ray;
+  ray.o = {0.5f, 2.5f, 0};
+  ray.d = {0, 0, 1};
+  ray.time = 1.0f;
+  bool hit = false;
+  for (uint32_t i = 0; i < s.size(); ++i) {
+    SurfaceHit h;
+    hit = hit || s.intersect(i, ray, h);
+  }
+  EXPECT_TRUE(hit);
+  ray.time = 0.0f;
+  hit = false;
+  for (uint32_t i = 0; i < s.size(); ++i) {
+    SurfaceHit h;
+    hit = hit || s.intersect(i, ray, h);
+  }
+  EXPECT_FALSE(hit) << "not there at shutter open";
+}
+
+TEST(SceneBuilderMotion, AMovingCameraMovesTheWorldTheOtherWay) {
+  Built b = build("Shutter 0 1\nMotionBegin [0 1]\nTranslate 0 0 0\nTranslate -3 0 0\nMotionEnd\nWorldBegin\n" +
+                  std::string(kStrand) + "Sphere 1 -1 1 360\nWorldEnd\n");
+  const Scene& scene = b.scenes.at(0);
+  ASSERT_TRUE(scene.curves.moving(0));
+  EXPECT_FLOAT_EQ(point_at(scene.curves, 0, 0.0f, 0).x, 4.0f) << "the camera renders from where it is at open";
+  EXPECT_FLOAT_EQ(point_at(scene.curves, 0, 1.0f, 0).x, 1.0f);
+  EXPECT_TRUE(has_warning(b, "motion blur of Sphere under a moving transform is not supported"));
+}
+
+TEST(SceneBuilderMotion, ACameraBlockWhoseSamplesAgreeMovesNothing) {
+  Built b = build("Shutter 0 1\nMotionBegin [0 1]\nTranslate 1 0 0\nTranslate 1 0 0\nMotionEnd\nWorldBegin\n" +
+                  std::string(kStrand) + "Polygon \"P\" [0 0 5  1 0 5  1 1 5]\nWorldEnd\n");
+  const Scene& scene = b.scenes.at(0);
+  EXPECT_FALSE(scene.has_motion());
+  EXPECT_EQ(scene.surfaces.polygons.size(), 1u);
+  EXPECT_FLOAT_EQ(scene.camera.world_to_camera.transform_point(Vec3d{0, 0, 0}).x, 1.0f);
+}
+
+TEST(SceneBuilderMotion, UnderAMovingCameraTheWorldsSpacesMoveAndCameraSpaceStays) {
+  Built b = build("Shutter 0 1\nMotionBegin [0 1]\nTranslate 0 0 0\nTranslate -3 0 0\nMotionEnd\nWorldBegin\n"
+                  "AttributeBegin\nCoordSysTransform \"world\"\n" +
+                  std::string(kStrand) + "AttributeEnd\nAttributeBegin\nCoordSysTransform \"camera\"\n" + kStrand +
+                  "AttributeEnd\nWorldEnd\n");
+  const CurveSet& cs = b.scenes.at(0).curves;
+  ASSERT_EQ(cs.size(), 2u);
+  ASSERT_TRUE(cs.moving(0));
+  EXPECT_FLOAT_EQ(point_at(cs, 0, 1.0f, 0).x, 1.0f) << "placed in the world: moves with it";
+  EXPECT_FALSE(cs.moving(1)) << "placed in camera space: stays where the image's camera sees it";
 }
 
 }  // namespace
