@@ -135,6 +135,7 @@ void render_tile_stochastic(const HiderContext& ctx, const PixelRect& rect, Tile
   // Motion blur: each sample sees the scene at one time of the shutter, stratified over the
   // pixel's samples (drawn only when something moves, so that still scenes keep their images).
   const bool moves = ctx.scene.has_motion();
+  const ShutterOpening& shutter = ctx.scene.output.shutter_opening;
   for (int py = rect.y0; py < rect.y1; ++py)
     for (int px = rect.x0; px < rect.x1; ++px) {
       if (camera.has_lens()) shuffle_strata(uint32_t(px), uint32_t(py), kLensPermutationStream, ctx.seed, lens_strata);
@@ -156,7 +157,9 @@ void render_tile_stochastic(const HiderContext& ctx, const PixelRect& rect, Tile
           } else {
             ray = camera.generate_ray(x, y);
           }
-          if (moves) ray.time = (float(time_strata[size_t(index)]) + rng.next_float()) / float(nx * ny);
+          // Stratified uniformly, then shaped by how the shutter opens (ShutterOpening::time_at).
+          if (moves)
+            ray.time = shutter.time_at((float(time_strata[size_t(index)]) + rng.next_float()) / float(nx * ny));
           ++counters.primary_rays;
           SampleValue v = trace_camera_ray(ctx, ray, counters, scratch);
           acc.add_sample(x, y, {v.color.x, v.color.y, v.color.z, v.alpha}, v.depth);

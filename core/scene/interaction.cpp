@@ -68,15 +68,16 @@ Interaction point_interaction(const PointSet& points, uint32_t local, const Ray&
   const Vec3f ax = transfer(footprint->axis_x(it.t), ray.d, it.N);
   const Vec3f ay = transfer(footprint->axis_y(it.t), ray.d, it.N);
   const float side = std::sqrt(length(cross(ax, ay)));
-  const float disc_side = std::sqrt(std::numbers::pi_v<float>) * points.radius[local];
+  const float radius = points.radius_at(local, ray.time);
+  const float disc_side = std::sqrt(std::numbers::pi_v<float>) * radius;
   const float scale = side > disc_side && side > 0.0f ? disc_side / side : 1.0f;
   it.dPdx = ax * scale;
   it.dPdy = ay * scale;
   // The centre of that square: where the ray crosses the disc when the disc is the larger, kept
   // inside the disc by half the square.
-  const Vec3f centre = points.center[local];
+  const Vec3f centre = points.center_at(local, ray.time);
   const Vec3f offset = it.P - centre;
-  const float room = std::max(0.0f, points.radius[local] - 0.5f * std::min(side, disc_side));
+  const float room = std::max(0.0f, radius - 0.5f * std::min(side, disc_side));
   const float reach = length(offset);
   if (reach > room) it.P = centre + (reach > 0.0f ? offset * (room / reach) : Vec3f{});
   return it;

@@ -4,6 +4,7 @@
 // them into evaluators.
 #pragma once
 
+#include "core/math/shutter_opening.h"
 #include "core/math/bbox.h"
 #include "core/scene/camera.h"
 #include "core/geometry/curves/curve_set.h"
@@ -85,6 +86,8 @@ struct OutputSettings {
   // Shutter open close (RIB times). Motion blur when close > open: moving geometry keeps its keys
   // at shutter-normalised times (0 at open, 1 at close) and the hiders sample or sweep them.
   double shutter_open = 0, shutter_close = 0;
+  // Camera "shutteropening" [a b]: how much each moment of the shutter counts.
+  ShutterOpening shutter_opening;
   std::string hider = "hidden";
   // Option "trace" "int maxdepth": the longest chain of reflection and refraction rays (PRMan's
   // name and default). Shadow rays do not count.
@@ -130,9 +133,9 @@ struct Scene {
     return PrimKind::Point;
   }
   size_t primitive_count() const { return curves.size() + surfaces.size() + points.size(); }
-  // Motion blur: whether anything moves during the shutter (curves, or surfaces lowered to
-  // triangles); the hiders sample or sweep time only then, so that still scenes keep their images.
-  bool has_motion() const { return curves.has_motion() || surfaces.has_motion(); }
+  // Motion blur: whether anything moves during the shutter (curves, surfaces lowered to
+  // triangles, points); the hiders sample or sweep time only then, so that still scenes keep their images.
+  bool has_motion() const { return curves.has_motion() || surfaces.has_motion() || points.has_motion(); }
 
   // Builds the acceleration structure over the primitives (call once after all geometry is added).
   void build_acceleration(AcceleratorKind kind = kDefaultAccelerator);

@@ -2,8 +2,9 @@
 // shutter leaves alpha w/L on every pixel well inside its sweep and w summed across a row (the
 // area the shutter conserves), with the default hider at one ray per pixel (its rays sweep the
 // shutter: the time-swept coverage in closed form) and with the stochastic hider's jittered
-// times; a transform block, a deformation block and a turning transform all move it; the image is
-// the same for any thread count.
+// times; a transform block, a deformation block and a turning transform all move it; a shutter
+// that opens and closes gradually (Camera "shutteropening") weights the middle of the sweep; the
+// image is the same for any thread count.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -154,6 +155,36 @@ TEST(MotionBlurRender, TheImageIsTheSameForAnyThreadCount) {
     const std::string scene = strand_scene(kDeformationBlock, 2);
     const Image a = render_image(scene, hider, 1), b = render_image(scene, hider, 2);
     EXPECT_EQ(a.pixels, b.pixels) << to_string(hider);
+  }
+}
+
+TEST(MotionBlurRender, AShutterThatOpensGraduallyWeightsTheMiddleOfTheSweep) {
+  // shutteropening [0.5 0.5]: the shutter opens until mid-shutter and closes at once after, a
+  // triangle of weight 2 at the middle: the strand leaves twice the box shutter's alpha where it
+  // passes at mid-shutter and little near the ends, and its width summed across a row.
+  std::string triangle = strand_scene(kTranslateBlock);
+  triangle.replace(triangle.find("Shutter 0 1"), 11, "Shutter 0 1\nCamera \"main\" \"float[2] shutteropening\" [0.5 0.5]");
+  std::string triangle_16x16 = triangle;
+  triangle_16x16.replace(triangle_16x16.find("PixelSamples 1 1"), 16, "PixelSamples 16 16");
+  for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
+    const Image image = render_image(hider == HiderKind::Distance ? triangle : triangle_16x16, hider);
+    const Row r = row_alpha(image);
+    EXPECT_NEAR(r.sum, kStrandWidth, 0.03 * kStrandWidth) << to_string(hider);
+    // Columns 32 and 31 hold the strand at mid-shutter (x = -0.25); columns 23 and 40, a
+    // little more than 0.4 of the shutter away from it, at under a fifth of the peak weight.
+    auto column = [&](int x) {
+      double c = 0;
+      for (int y = 4; y < kHeight - 4; ++y) c += image.at(x, y, 3);
+      return c / (kHeight - 8);
+    };
+    const double box = kStrandWidth / kSweep;
+    const double middle = 0.5 * (column(31) + column(32));
+    // The distance hider's four stretches of equal weight make the triangle a staircase whose
+    // middle steps weigh 1.71; the stochastic hider samples it (256 times per pixel, 8 rows:
+    // about 1.87 expected, with a standard deviation of about 0.14).
+    EXPECT_GT(middle, 1.5 * box) << to_string(hider);
+    EXPECT_LT(middle, 2.3 * box) << to_string(hider);
+    EXPECT_LT(0.5 * (column(23) + column(40)), 0.8 * box) << to_string(hider);
   }
 }
 

@@ -131,5 +131,58 @@ TEST(SurfaceMotionBlurRender, TheImageIsTheSameForAnyThreadCount) {
   }
 }
 
+TEST(SurfaceMotionBlurRender, MovingAndDeformingQuadricsBlurAsTriangleMeshes) {
+  // A sphere of radius 3 moving 20 pixels keeps its area (9 pi) summed over the image and leaves
+  // nothing beyond its sweep; a disk whose radius grows from 2 to 4 during the shutter covers,
+  // on average, the mean of pi r^2 over the shutter: pi (4 + 8 + 16) / 3 = 28 pi / 3.
+  const std::string sphere =
+      "MotionBegin [0 1]\nTranslate -10 0 5\nTranslate 10 0 5\nMotionEnd\nSphere 3 -3 3 360";
+  const std::string disk = "Translate 0 0 5\nMotionBegin [0 1]\nDisk 0 2 360\nDisk 0 4 360\nMotionEnd";
+  for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
+    const bool distance = hider == HiderKind::Distance;
+    const Image moving = render_image(scene(sphere, distance ? 1 : 8), hider);
+    double sum = 0, beyond = 0;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x) {
+        sum += moving.at(x, y, 3);
+        const double left = x - 32.0;
+        if (left + 1 < -13.5 || left > 13.5) beyond += moving.at(x, y, 3);
+      }
+    // The distance hider merges the front and back pieces of a closed mesh that meet in a
+    // footprint by their masks, which over-counts a little at the outline: +1.2 % on this sphere
+    // still, +2.4 % moving (the stochastic hider: -0.6 %, the chords' area).
+    EXPECT_NEAR(sum, 9 * 3.14159265, (distance ? 0.04 : 0.02) * 9 * 3.14159265) << to_string(hider);
+    EXPECT_EQ(beyond, 0.0) << to_string(hider);
+    const Image growing = render_image(scene(disk, distance ? 1 : 8), hider);
+    double disk_sum = 0;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x) disk_sum += growing.at(x, y, 3);
+    EXPECT_NEAR(disk_sum, 28 * 3.14159265 / 3, 0.02 * 28 * 3.14159265 / 3) << to_string(hider);
+  }
+}
+
+TEST(SurfaceMotionBlurRender, MovingPointsKeepTheirAreaAndSweepTheirPath) {
+  // A row of ten points 0.6 pixels wide moving 12 pixels: their area summed over the image
+  // (10 pi 0.3^2), and nothing beyond their sweep; the same for both hiders.
+  std::ostringstream points;
+  points << "MotionBegin [0 1]\nTranslate -6 0 0\nTranslate 6 0 0\nMotionEnd\nPoints \"P\" [";
+  for (int i = 0; i < 10; ++i) points << " 0.3 " << i * 2 - 9.7 << " 5";
+  points << "] \"constantwidth\" [0.6]";
+  const double area = 10 * 3.14159265 * 0.09;
+  for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
+    const bool distance = hider == HiderKind::Distance;
+    const Image image = render_image(scene(points.str(), distance ? 1 : 16), hider);
+    double sum = 0, beyond = 0;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x) {
+        sum += image.at(x, y, 3);
+        const double left = x - 32.0;
+        if (left + 1 < -6.0 || left > 6.6) beyond += image.at(x, y, 3);
+      }
+    EXPECT_NEAR(sum, area, 0.03 * area) << to_string(hider);
+    EXPECT_EQ(beyond, 0.0) << to_string(hider);
+  }
+}
+
 }  // namespace
 }  // namespace darc

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/math/bbox.h"
@@ -32,9 +33,34 @@ struct PointSet {
   std::vector<uint32_t> shading_index;  // per point: its entry in `shading`
   std::vector<PointShading> shading;    // distinct colours and opacities
 
+  // Motion blur: per point, an index into `motions` or kStillPoint (empty while none moves). A
+  // moving point's key k (at shutter time motion_times[times + k], 0 at open, 1 at close) has
+  // its centre and radius at motion_center[first + k], motion_radius[first + k]; between keys
+  // they move linearly. `center` and `radius` hold the point at shutter open.
+  static constexpr uint32_t kStillPoint = 0xffffffffu;
+  struct PointMotion {
+    uint32_t times = 0, keys = 0, first = 0;
+  };
+  std::vector<uint32_t> motion;
+  std::vector<PointMotion> motions;
+  std::vector<float> motion_times;
+  std::vector<Vec3f> motion_center;
+  std::vector<float> motion_radius;
+
+  bool has_motion() const { return !motions.empty(); }
+  bool moving(size_t i) const { return !motion.empty() && motion[i] != kStillPoint; }
+  Vec3f center_at(size_t i, float time) const;
+  float radius_at(size_t i, float time) const;
+  // Key times shared by the points of one request (increasing from 0 to 1): their offset, for
+  // set_motion.
+  uint32_t add_motion_times(std::span<const float> times);
+  // Makes point i move through the given keys (as many as the times at `times`); keys that all
+  // agree leave it still.
+  void set_motion(size_t i, uint32_t times, std::span<const Vec3f> centers, std::span<const float> radii);
+
   size_t size() const { return center.size(); }
   bool empty() const { return center.empty(); }
-  // The cube around the disc (it may face any way).
+  // The cube around the disc (it may face any way), over the whole shutter.
   BBox bounds(size_t i) const;
   const Vec3f& color(size_t i) const { return shading[shading_index[i]].cs; }
   const Vec3f& opacity(size_t i) const { return shading[shading_index[i]].os; }
@@ -47,7 +73,8 @@ struct PointSet {
   size_t memory_bytes() const;
 };
 
-// The exact hit of point i by `ray`: the disc through its centre perpendicular to the ray's
+// The exact hit of point i by `ray` (where the point is at ray.time): the disc through its centre
+// perpendicular to the ray's
 // direction. Hit when the ray passes within the radius of the centre with the centre's
 // projection t in (ray.tmin, ray.tmax); false for radius 0 and for non-finite or zero rays.
 bool intersect_point(const PointSet& set, size_t i, const Ray& ray, float& t);

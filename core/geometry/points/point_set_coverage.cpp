@@ -1,6 +1,9 @@
 #include "core/geometry/points/point_set_coverage.h"
 
+#include "core/footprint/swept_polygon_coverage.h"
+
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 
@@ -102,12 +105,14 @@ float point_coverage(CoverageModel model, float x, float y, float r, float ax_x,
   return std::clamp(coverage, 0.0f, 1.0f);
 }
 
-bool intersect_point_distance(const PointSet& set, size_t i, const DistanceRay& ray, CoverageModel model,
-                              PointFragmentHit& hit, bool compute_mask) {
-  if (!ray.valid) return false;
-  const float r = set.radius[i];
+namespace {
+
+// The fragment of a disc of radius r at `centre` (intersect_point_distance's body); its mask
+// takes, among the `allowed` points, as many as the coverage is worth of them.
+bool disc_fragment(const Vec3f& centre, float r, const DistanceRay& ray, CoverageModel model, PointFragmentHit& hit,
+                   bool compute_mask, CoverageMask allowed) {
   if (!(r > 0.0f)) return false;
-  const Vec3f rel = set.center[i] - ray.origin;
+  const Vec3f rel = centre - ray.origin;
   const float depth = dot(rel, ray.dir);
   const float t = depth / ray.ray_length;
   if (!(t > ray.t_min && t < ray.t_max)) return false;
@@ -127,14 +132,54 @@ bool intersect_point_distance(const PointSet& set, size_t i, const DistanceRay& 
   hit.t = t;
   hit.coverage = coverage;
   hit.distance = std::sqrt(d2);
-  hit.mask = kFullMask;
+  hit.mask = allowed;
   if (compute_mask && !binary) {
     // The mask points nearest the centre, as many as the coverage is worth (at least one): points
     // side by side in a footprint take different points, points in the same place the same ones.
-    constexpr int kPoints = kMaskSide * kMaskSide;
-    const int count = std::max(1, int(std::lround(coverage * float(kPoints))));
-    hit.mask = nearest_points_mask(FootprintSquare{ax_x, ax_y, ay_x, ay_y}, x, y, 0.0f, 0.0f, true, count, kFullMask);
+    const int points = std::popcount(allowed);
+    const int count = std::max(1, int(std::lround(coverage * float(points))));
+    hit.mask = nearest_points_mask(FootprintSquare{ax_x, ax_y, ay_x, ay_y}, x, y, 0.0f, 0.0f, true, count, allowed);
   }
+  return true;
+}
+
+}  // namespace
+
+bool intersect_point_distance(const PointSet& set, size_t i, const DistanceRay& ray, CoverageModel model,
+                              PointFragmentHit& hit, bool compute_mask) {
+  if (!ray.valid) return false;
+  if (!set.moving(i) || !ray.sweeps_shutter) {
+    const bool moves = set.moving(i);
+    return disc_fragment(moves ? set.center_at(i, ray.time) : set.center[i],
+                         moves ? set.radius_at(i, ray.time) : set.radius[i], ray, model, hit, compute_mask,
+                         kFullMask);
+  }
+  // A moving point under a ray that sweeps a stretch of the shutter: as a moving surface piece
+  // (swept_polygon_coverage.h), its coverage averaged over the middles of kSweptPolygonTimes parts
+  // of the stretch, each part's mask points (the times they stand for) taking where it is then.
+  float coverage = 0;
+  CoverageMask mask = 0;
+  bool found = false;
+  float best = 0;
+  for (int part = 0; part < kSweptPolygonTimes; ++part) {
+    const float middle = (float(part) + 0.5f) / float(kSweptPolygonTimes);
+    const float time = ray.sweep_from + (ray.sweep_to - ray.sweep_from) * middle;
+    PointFragmentHit h;
+    if (!disc_fragment(set.center_at(i, time), set.radius_at(i, time), ray, model, h, compute_mask,
+                       swept_polygon_part_points(part)))
+      continue;
+    coverage += h.coverage;
+    mask |= h.mask;
+    const float distance = std::abs(middle - 0.5f);
+    if (!found || distance < best) {
+      hit = h;
+      best = distance;
+    }
+    found = true;
+  }
+  if (!found) return false;
+  hit.coverage = coverage / float(kSweptPolygonTimes);
+  hit.mask = compute_mask ? mask : kFullMask;
   return true;
 }
 

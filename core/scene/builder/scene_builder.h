@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/scene/builder/graphics_state.h"
+#include "core/geometry/surfaces/quadric_tessellation.h"
 #include "core/scene/ris/ris_patterns.h"
 #include "core/scene/scene.h"
 #include "core/geometry/surfaces/dicing_view.h"
@@ -193,9 +194,7 @@ class SceneBuilder : public RiTarget {
   // At WorldEnd (scene_builder_renderable.cpp): one warning when the frame has nothing that can
   // show up in its image, with the reason.
   void warn_if_nothing_renderable(const Scene& scene, const SourceLoc& loc);
-  // Motion blocks (scene_builder_motion.cpp). Requests that cannot move (every primitive but
-  // Curves): inside a block, only the first sample is applied (true: skip this one).
-  bool skip_motion_sample(const std::string& request);
+  // Motion blocks (scene_builder_motion.cpp).
   // A transform request inside a motion block: recorded as a sample (true), applied at MotionEnd.
   // `absolute`: it replaces the current transform (Transform, Identity) instead of concatenating.
   bool transform_sample(const char* request, const Matrix4& m, bool absolute, const SourceLoc& loc);
@@ -206,10 +205,15 @@ class SceneBuilder : public RiTarget {
   void end_transform_motion(const MotionBlock& block);
   void end_curves_motion(const MotionBlock& block);
   void end_polygons_motion(const MotionBlock& block);
+  // A motion block of a tessellated surface (SubdivisionMesh, Patch, PatchMesh, NuPatch): each
+  // sample tessellated; when every sample gives the same triangles (the usual case of a deforming
+  // mesh), one moving mesh, else the first sample without motion blur (warned).
+  void end_tessellated_motion(const MotionBlock& block);
   // Whether the shutter is open for a while (Shutter open < close): then things move.
   bool motion_blur() const { return options_.output.shutter_close > options_.output.shutter_open; }
   // The current transform at RIB time t.
   Matrix4 ctm_at(double t) const { return ctm_keys_.empty() ? ctm_ : transform_at(ctm_keys_, t); }
+  void camera_shutter_opening(const Param& p, const SourceLoc& loc);
   // Sets the current transform to m relative to the world (Identity, Transform inside the world):
   // under a moving camera, it moves with the world (world_keys_).
   void set_world_relative_ctm(const Matrix4& m);
@@ -253,6 +257,23 @@ class SceneBuilder : public RiTarget {
   // the camera at shutter open, and the world moves instead, by W2C(t) W2C(open)^-1 at RIB time
   // t; these are its keys (empty: the camera does not move).
   std::vector<TransformKey> world_keys_;
+  // While a motion block's tessellated samples are tessellated (end_tessellated_motion):
+  // add_triangle_mesh hands its meshes here instead of adding them.
+  struct CapturedMesh {
+    TriangleMeshData mesh;
+    uint32_t material;
+  };
+  std::vector<CapturedMesh>* captured_meshes_ = nullptr;
+  // While a moving Points request is built key by key (add_moving_points): add_points adds to this
+  // set instead of the scene's, and reports its warnings only for the first key.
+  PointSet* captured_points_ = nullptr;
+  bool later_motion_key_ = false;
+  // The grid of the first captured quadric sample, so that every sample of the block gets it.
+  std::optional<QuadricGrid> captured_grid_;
+  // A quadric that moves (a moving transform, or a sample of a motion block): tessellated.
+  bool quadric_moves() const { return captured_meshes_ != nullptr || (motion_blur() && !ctm_keys_.empty()); }
+  // The grid a moving quadric is tessellated on: its own, or the first sample's in a block.
+  QuadricGrid moving_quadric_grid(const QuadricGrid& own);
   std::vector<Block> blocks_;
   std::vector<SourceLoc> block_locs_;
 
@@ -354,8 +375,19 @@ class SceneBuilder : public RiTarget {
       SourceLoc loc;
     };
     std::vector<PolygonsSample> polygons;  // Polygon, GeneralPolygon, PointsPolygons, ... samples
+    struct PrimitiveSample {
+      PrimitiveRequest request;
+      ParamList params;
+      SourceLoc loc;
+    };
+    std::vector<PrimitiveSample> tessellated;  // SubdivisionMesh, Patch, PatchMesh, NuPatch, quadric samples
+    std::vector<PrimitiveSample> points;       // Points samples
   };
   std::optional<MotionBlock> motion_;
+  // Points that move: samples of a motion block (their "P" and "width" at the block's times) or
+  // one request under a moving transform or camera; built at every key time, then keyed.
+  using MotionBlockSample = MotionBlock::PrimitiveSample;
+  void add_moving_points(const std::vector<MotionBlockSample>& samples, const std::vector<double>& times);
 };
 
 }  // namespace darc

@@ -1,10 +1,10 @@
 // SceneBuilder's motion blur requests: Shutter, and MotionBegin/MotionEnd blocks around a
 // transform (the current transform then moves: ctm_keys_), around Curves (deformation: the
-// samples' positions, built in scene_builder_geometry.cpp) or around polygons (deformation: a
-// moving triangle mesh, built here). Other primitives in a block keep their first sample, with
-// one warning; a block that breaks the rules (times that do not increase, a count of samples
-// other than the times', two kinds of request) is an error (RI RIE_BADMOTION) and keeps its first
-// sample.
+// samples' positions, built in scene_builder_geometry.cpp), around polygons (deformation: a
+// moving triangle mesh), around tessellated surfaces and quadrics (each sample tessellated alike:
+// scene_builder_primitives.cpp) or around Points (keyed: scene_builder_points.cpp). A block that
+// breaks the rules (times that do not increase, a count of samples other than the times', two
+// kinds of request) is an error (RI RIE_BADMOTION) and keeps its first sample.
 #include "core/scene/builder/scene_builder.h"
 
 #include <fmt/format.h>
@@ -74,18 +74,6 @@ bool SceneBuilder::count_motion_sample(const std::string& request, const SourceL
   return true;
 }
 
-bool SceneBuilder::skip_motion_sample(const std::string& request) {
-  if (!motion_) return false;
-  const SourceLoc loc = motion_->loc;
-  if (!count_motion_sample(request, loc)) return true;
-  if (motion_->samples == 1 && motion_blur())
-    diag_.warning_once("motion:" + request, loc, "MotionBegin",
-                       fmt::format("motion blur of {} is not supported (Curves, polygons and transforms move): its "
-                                   "first motion sample is used",
-                                   request));
-  return motion_->samples > 1;
-}
-
 bool SceneBuilder::transform_sample(const char* request, const Matrix4& m, bool absolute, const SourceLoc& loc) {
   if (!motion_) return false;
   if (count_motion_sample(request, loc)) {
@@ -114,10 +102,21 @@ void SceneBuilder::motion_end(const SourceLoc& loc) {
     block.matrices.resize(std::min<size_t>(block.matrices.size(), 1));
     block.curves.resize(std::min<size_t>(block.curves.size(), 1));
     block.polygons.resize(std::min<size_t>(block.polygons.size(), 1));
+    block.tessellated.resize(std::min<size_t>(block.tessellated.size(), 1));
+    block.points.resize(std::min<size_t>(block.points.size(), 1));
   }
   if (!block.matrices.empty()) end_transform_motion(block);
   if (!block.curves.empty()) end_curves_motion(block);
   if (!block.polygons.empty()) end_polygons_motion(block);
+  if (!block.tessellated.empty()) end_tessellated_motion(block);
+  if (!block.points.empty()) {
+    try {
+      if (!building_geometry("Points", block.points.front().loc)) return;
+      add_moving_points(block.points, block.times);
+    } catch (const RibError& e) {
+      diag_.error(block.points.front().loc, "Points", e.what());
+    }
+  }
 }
 
 std::vector<float> SceneBuilder::positions_at(const std::vector<PositionSample>& samples, double t) {

@@ -225,11 +225,33 @@ void SceneBuilder::hider(const std::string& type, const ParamList&, const Source
 void SceneBuilder::camera(const std::string& name, const ParamList& params, const SourceLoc& loc) {
   if (!option_allowed("Camera", loc)) return;
   options_.named_cameras.emplace_back(name, ctm_);
-  if (!params.empty())
+  for (const Param& p : params.params) {
+    if (p.name == "shutteropening") {
+      camera_shutter_opening(p, loc);
+      continue;
+    }
     diag_.warning_once("camera parameters", loc, "Camera",
-                       "camera parameters (\"" + params.params.front().name +
-                           "\", shutter opening, lens and projection settings) are not supported: ignored; "
-                           "the image is rendered from the camera in effect at WorldBegin");
+                       "camera parameters (\"" + p.name +
+                           "\", lens and projection settings) are not supported: ignored; the image is rendered "
+                           "from the camera in effect at WorldBegin");
+  }
+}
+
+// PRMan's shutter opening: [a b], the times (fractions of the shutter) at which the shutter has
+// opened fully and begins to close; RenderMan 21+ writes 8 numbers, a and b then the control
+// points of its opening and closing curves, which darc takes as straight ramps.
+void SceneBuilder::camera_shutter_opening(const Param& p, const SourceLoc& loc) {
+  const std::vector<float>& v = p.floats;
+  if (p.decl.is_string() || (v.size() != 2 && v.size() != 8))
+    throw RibError(fmt::format("\"shutteropening\" takes 2 numbers (or RenderMan's 8), found {}: ignored",
+                               p.decl.is_string() ? std::string("a string") : std::to_string(v.size())));
+  if (!(v[0] >= 0 && v[0] <= v[1] && v[1] <= 1))
+    throw RibError(fmt::format("\"shutteropening\" [{} {}] must be times 0 <= a <= b <= 1: ignored", v[0], v[1]));
+  options_.output.shutter_opening = {v[0], v[1]};
+  if (v.size() == 8)
+    diag_.warning_once("shutteropening curve", loc, "Camera",
+                       "the shutter curve's control points (numbers 3 to 8 of \"shutteropening\") are not "
+                       "supported: the shutter opens and closes linearly");
 }
 
 void SceneBuilder::ignored_request(const std::string& request, const std::vector<double>& numbers,

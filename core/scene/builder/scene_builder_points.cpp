@@ -95,7 +95,7 @@ void SceneBuilder::add_points(const PrimitiveRequest&, const ParamList& params, 
   if (count == 0) return;
   // A point costs less than a curve segment (24 bytes against 81) with the same share of the BVH
   // build: counting it as one keeps the estimate above what it needs.
-  if (!reserve_frame_memory(count, 0, 0)) return;
+  if (!captured_points_ && !reserve_frame_memory(count, 0, 0)) return;
 
   // Widths are measured in object space: scaled as Curves scales them (the cube root of the
   // volume scale, exact for uniform scale).
@@ -109,7 +109,7 @@ void SceneBuilder::add_points(const PrimitiveRequest&, const ParamList& params, 
   const float shared_width = width ? 0.0f : width_clamps.apply(given_constant_width, 0, kFloatMax, 0);
   const uint32_t material = make_material(loc);
   size_t beyond_float_range = 0;
-  PointSet& points = scene_->points;
+  PointSet& points = captured_points_ ? *captured_points_ : scene_->points;
   points.center.reserve(points.size() + count);
   points.radius.reserve(points.size() + count);
   points.material.reserve(points.size() + count);
@@ -136,6 +136,7 @@ void SceneBuilder::add_points(const PrimitiveRequest&, const ParamList& params, 
     }
     points.add(centre, radius, material, shading);
   }
+  if (later_motion_key_) return;  // its warnings were the first key's
   if (width_clamps.count > 0)
     diag_.warning(loc, "Points",
                   width ? width_clamps.message(*width, "width", "negative", 0, kFloatMax)
@@ -146,6 +147,93 @@ void SceneBuilder::add_points(const PrimitiveRequest&, const ParamList& params, 
                   fmt::format("{} beyond the float range in world space: dropped",
                               beyond_float_range == 1 ? std::string("1 point lies")
                                                       : fmt::format("{} points lie", beyond_float_range)));
+}
+
+void SceneBuilder::add_moving_points(const std::vector<MotionBlockSample>& samples, const std::vector<double>& times) {
+  const MotionBlockSample& first = samples.front();
+  // The floats of parameter `name` of every sample, when each has it with as many (else none).
+  auto parameter_samples = [&](const char* name) {
+    std::vector<PositionSample> out;
+    if (samples.size() < 2) return out;
+    for (size_t k = 0; k < samples.size(); ++k) {
+      const Param* p = samples[k].params.find(name);
+      if (!p || p->decl.is_string() || (k > 0 && p->floats.size() != out.front().P.size())) return std::vector<PositionSample>{};
+      out.push_back({times.at(k), p->floats});
+    }
+    return out;
+  };
+  const std::vector<PositionSample> positions = parameter_samples("P");
+  const std::vector<PositionSample> widths = parameter_samples("width");
+  auto alone = [&] {
+    note_geometry(0);
+    add_points(first.request, first.params, first.loc);
+  };
+  if (!motion_blur() || (samples.size() > 1 && positions.empty())) {
+    if (samples.size() > 1)
+      diag_.error(first.loc, "Points",
+                  "its motion samples do not have as many points (\"P\"): the first sample is built without motion "
+                  "blur");
+    return alone();
+  }
+  const Param* P = first.params.find("P");
+  const std::vector<double> key_times = motion_key_times(positions, P ? P->floats : std::vector<float>{});
+  // The request built at every key time: its positions (and widths) then, moved by the transform
+  // then, into a set of its own.
+  std::vector<PointSet> keys(key_times.size());
+  const Matrix4 saved_ctm = ctm_;
+  const std::vector<TransformKey> saved_keys = ctm_keys_;
+  bool same = true;
+  for (size_t k = 0; k < key_times.size() && same; ++k) {
+    ParamList params = first.params;
+    for (Param& p : params.params) {
+      if (p.name == "P" && !positions.empty()) p.floats = positions_at(positions, key_times[k]);
+      if (p.name == "width" && !widths.empty()) p.floats = positions_at(widths, key_times[k]);
+    }
+    ctm_ = ctm_at(key_times[k]);
+    ctm_keys_.clear();
+    captured_points_ = &keys[k];
+    later_motion_key_ = k > 0;
+    try {
+      add_points(first.request, params, first.loc);
+    } catch (...) {
+      captured_points_ = nullptr;
+      later_motion_key_ = false;
+      ctm_ = saved_ctm;
+      ctm_keys_ = saved_keys;
+      throw;
+    }
+    captured_points_ = nullptr;
+    later_motion_key_ = false;
+    ctm_ = saved_ctm;
+    ctm_keys_ = saved_keys;
+    // A point beyond the float range at one key is dropped there: the keys no longer match.
+    same = keys[k].size() == keys[0].size();
+  }
+  if (!same) {
+    diag_.warning(first.loc, "Points",
+                  "a point lies beyond the float range at one motion key but not at another: built at shutter "
+                  "open without motion blur");
+    keys.resize(1);
+  }
+  note_geometry(0);
+  PointSet& points = scene_->points;
+  if (!reserve_frame_memory(keys[0].size(), 0, 0)) return;
+  const double open = options_.output.shutter_open, close = options_.output.shutter_close;
+  std::vector<float> normalised;
+  for (double t : key_times) normalised.push_back(float((t - open) / (close - open)));
+  const uint32_t times_offset = keys.size() > 1 ? points.add_motion_times(normalised) : 0;
+  std::vector<Vec3f> centers(keys.size());
+  std::vector<float> radii(keys.size());
+  for (size_t i = 0; i < keys[0].size(); ++i) {
+    const PointSet& open_key = keys[0];
+    points.add(open_key.center[i], open_key.radius[i], open_key.material[i], open_key.shading[open_key.shading_index[i]]);
+    if (keys.size() < 2) continue;
+    for (size_t k = 0; k < keys.size(); ++k) {
+      centers[k] = keys[k].center[i];
+      radii[k] = keys[k].radius[i];
+    }
+    points.set_motion(points.size() - 1, times_offset, centers, radii);
+  }
 }
 
 }  // namespace darc

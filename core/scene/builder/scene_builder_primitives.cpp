@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 #include <utility>
@@ -50,21 +51,31 @@ void SceneBuilder::primitive(const PrimitiveRequest& request, const ParamList& p
     return;
   }
   if (record([=](SceneBuilder& b) { b.primitive(request, params, loc); })) return;
-  if (skip_motion_sample(request.name)) return;
+  // Surfaces a motion block deforms: tessellated at MotionEnd, the quadrics too.
+  static constexpr std::string_view kDeformable[] = {"SubdivisionMesh", "Patch", "PatchMesh", "NuPatch",
+                                                     "Sphere", "Cone", "Cylinder", "Disk",
+                                                     "Paraboloid", "Hyperboloid", "Torus"};
+  const bool tessellated = std::find(std::begin(kDeformable), std::end(kDeformable), request.name) != std::end(kDeformable);
+  if (motion_) {
+    // A sample of a motion block: built at MotionEnd with the others (tessellated alike, or
+    // points keyed).
+    if (count_motion_sample(request.name, loc)) {
+      if (request.name == "Points") {
+        motion_->points.push_back({request, params, loc});
+      } else if (tessellated) {
+        motion_->tessellated.push_back({request, params, loc});
+      }
+    }
+    return;
+  }
   if (!building_geometry(request.name.c_str(), loc)) return;
   // Geometry under a moving transform is not the same from frame to frame however its requests
   // are replayed.
   const bool moving_transform = motion_blur() && !ctm_keys_.empty();
   note_geometry(moving_transform ? 0 : replayed_id());
-  // Tessellated surfaces (patches, NURBS, subdivision meshes) move with their transform; the
-  // quadrics and points do not.
-  const bool tessellated = request.name == "SubdivisionMesh" || request.name == "Patch" ||
-                           request.name == "PatchMesh" || request.name == "NuPatch";
-  if (moving_transform && !tessellated)
-    diag_.warning_once("motion:transform " + request.name, loc, request.name,
-                       fmt::format("motion blur of {} under a moving transform is not supported: built where the "
-                                   "transform is at shutter open",
-                                   request.name));
+  // Surfaces move with their transform (quadrics as triangles: scene_builder_quadrics.cpp), and
+  // so do points, keyed at the transform's times.
+  if (moving_transform && request.name == "Points") return add_moving_points({{request, params, loc}}, {});
   (this->*builder)(request, params, loc);
 }
 
@@ -72,6 +83,13 @@ void SceneBuilder::add_sphere(const PrimitiveRequest& r, const ParamList&, const
   const double radius = r.numbers.at(0), zmin = r.numbers.at(1), zmax = r.numbers.at(2), thetamax = r.numbers.at(3);
   if (radius == 0 || thetamax == 0) return;  // empty surface
   Sphere sphere = Sphere::make(radius, zmin, zmax, thetamax, ctm_);
+  if (quadric_moves()) {
+    if (sphere.degenerate) return;
+    const std::optional<DicingView> view = dicing_view();
+    add_triangle_mesh(tessellate_sphere(sphere, moving_quadric_grid(sphere_grid(sphere, view ? &*view : nullptr))),
+                      make_material(loc));
+    return;
+  }
   const BBox box = sphere.bounds();
   // The whole request would be dropped, so it is an error (a Curves segment or a polygon face
   // beyond the range is only a part of its request: those are dropped with a warning).
@@ -107,6 +125,10 @@ TriangleMeshData mesh_in_world(const TriangleMeshData& object_space, const Matri
 
 size_t SceneBuilder::add_triangle_mesh(const TriangleMeshData& object_space, uint32_t material,
                                        const std::vector<PositionSample>* samples) {
+  if (captured_meshes_) {
+    captured_meshes_->push_back({object_space, material});
+    return object_space.triangle_count();
+  }
   const bool moves = motion_blur() && ((samples && samples->size() > 1) || !ctm_keys_.empty());
   size_t kept = 0;
   if (!moves) {
@@ -138,6 +160,68 @@ size_t SceneBuilder::add_triangle_mesh(const TriangleMeshData& object_space, uin
   }
   scene_->surfaces.triangle_material.resize(scene_->surfaces.triangles.size(), material);
   return kept;
+}
+
+QuadricGrid SceneBuilder::moving_quadric_grid(const QuadricGrid& own) {
+  if (!captured_meshes_) return own;
+  if (!captured_grid_) captured_grid_ = own;
+  return *captured_grid_;
+}
+
+void SceneBuilder::end_tessellated_motion(const MotionBlock& block) {
+  const auto& first = block.tessellated.front();
+  const std::string& name = first.request.name;
+  const PrimitiveBuilder builder = find_primitive_builder(name);
+  if (builder == nullptr) return;
+  auto build_first_alone = [&] {
+    try {
+      if (!building_geometry(name.c_str(), first.loc)) return;
+      note_geometry(0);
+      (this->*builder)(first.request, first.params, first.loc);
+    } catch (const RibError& e) {
+      diag_.error(first.loc, name, e.what());
+    }
+  };
+  if (block.tessellated.size() == 1 || !motion_blur()) return build_first_alone();
+  // Every sample tessellated the same way (the same triangles, as many vertices, the same
+  // materials), else no motion blur.
+  std::vector<std::vector<CapturedMesh>> meshes(block.tessellated.size());
+  bool same = true;
+  captured_grid_.reset();
+  for (size_t k = 0; k < block.tessellated.size() && same; ++k) {
+    const auto& sample = block.tessellated[k];
+    captured_meshes_ = &meshes[k];
+    try {
+      (this->*builder)(sample.request, sample.params, sample.loc);
+    } catch (const RibError& e) {
+      same = false;
+    }
+    captured_meshes_ = nullptr;
+    same = same && meshes[k].size() == meshes[0].size() && !meshes[k].empty();
+    if (k + 1 == block.tessellated.size() || !same) captured_grid_.reset();
+    for (size_t i = 0; same && i < meshes[k].size(); ++i) {
+      const CapturedMesh &a = meshes[0][i], &b = meshes[k][i];
+      same = a.material == b.material && a.mesh.indices == b.mesh.indices && a.mesh.P.size() == b.mesh.P.size();
+    }
+  }
+  if (!same) {
+    diag_.warning(first.loc, name,
+                  "its motion samples do not tessellate alike (topology, or a dicing rate that changed with the "
+                  "shape): the first sample is built without motion blur");
+    return build_first_alone();
+  }
+  if (!building_geometry(name.c_str(), first.loc)) return;
+  note_geometry(0);
+  for (size_t i = 0; i < meshes[0].size(); ++i) {
+    std::vector<PositionSample> samples;
+    for (size_t k = 0; k < meshes.size(); ++k) {
+      PositionSample s{block.times[k], {}};
+      s.P.reserve(3 * meshes[k][i].mesh.P.size());
+      for (const Vec3f& p : meshes[k][i].mesh.P) s.P.insert(s.P.end(), {p.x, p.y, p.z});
+      samples.push_back(std::move(s));
+    }
+    add_triangle_mesh(meshes[0][i].mesh, meshes[0][i].material, &samples);
+  }
 }
 
 }  // namespace darc

@@ -1,5 +1,6 @@
 // SceneBuilder's builders for the RI quadrics other than the sphere (RI Spec 3.2, 5.3): Cone,
-// Cylinder, Disk, Paraboloid, Hyperboloid and Torus, kept analytic in the surface set. The
+// Cylinder, Disk, Paraboloid, Hyperboloid and Torus, kept analytic in the surface set (as triangles
+// when they move: quadric_tessellation.h). The
 // parser has checked the argument counts (parser/primitive_signatures.cpp); these read the
 // numbers in the spec's order.
 
@@ -51,6 +52,13 @@ void SceneBuilder::add_torus(const PrimitiveRequest& r, const ParamList&, const 
 void SceneBuilder::add_quadric(Quadric quadric, const PrimitiveRequest& r, const SourceLoc& loc) {
   // Zero area or zero sweep (RI allows them): nothing to draw, as for a Sphere of radius 0.
   if (quadric.degenerate) return;
+  // A moving quadric: a moving triangle mesh (quadric_tessellation.h).
+  if (quadric_moves()) {
+    const std::optional<DicingView> view = dicing_view();
+    add_triangle_mesh(tessellate_quadric(quadric, moving_quadric_grid(quadric_grid(quadric, view ? &*view : nullptr))),
+                      make_material(loc));
+    return;
+  }
   const BBox box = quadric.bounds();
   // The whole request would be dropped, so it is an error, as for the Sphere.
   if (!(all_finite(box.lo) && all_finite(box.hi)))

@@ -234,10 +234,6 @@ std::vector<Row> transform_rows() {
          EXPECT_EQ(s.curves.size(), 2u);
          EXPECT_FALSE(s.curves.has_motion());
        }},
-      {"motion-unsupported", "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd"),
-       warning(3, "MotionBegin",
-               "motion blur of Sphere is not supported (Curves, polygons and transforms move): its first motion sample is used"),
-       [](const Scene& s) { EXPECT_EQ(s.surfaces.spheres.size(), 1u); }},
       {"motion-polygons-topology",
        "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nPointsPolygons [3] [0 1 2] \"P\" [0 0 0  1 0 0  0 1 0]\n"
                                   "PointsPolygons [3] [0 2 1] \"P\" [0 0 0  1 0 0  0 1 0]\nMotionEnd"),
@@ -256,18 +252,47 @@ std::vector<Row> transform_rows() {
          EXPECT_EQ(s.surfaces.polygons.size(), 1u);
          EXPECT_FALSE(s.has_motion());
        }},
-      {"motion-transform-unsupported",
-       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nTranslate 0 0 0\nTranslate 1 0 0\nMotionEnd\nSphere 1 -1 1 360"),
-       warning(7, "Sphere",
-               "motion blur of Sphere under a moving transform is not supported: built where the transform is at "
-               "shutter open"),
-       [](const Scene& s) { EXPECT_EQ(s.surfaces.spheres.size(), 1u); }},
+      {"motion-tessellation-differs",
+       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nSubdivisionMesh \"catmull-clark\" [4] [0 1 2 3] "
+                                  "[\"interpolateboundary\"] [0 0] [] [] \"P\" [0 0 0  1 0 0  1 1 0  0 1 0]\nSubdivisionMesh \"catmull-clark\" [3 3] [0 1 2  0 2 3] "
+                                  "[\"interpolateboundary\"] [0 0] [] [] \"P\" [0 0 0  1 0 0  1 1 0  0 1 0]\nMotionEnd"),
+       warning(4, "SubdivisionMesh",
+               "its motion samples do not tessellate alike (topology, or a dicing rate that changed with the shape): "
+               "the first sample is built without motion blur"),
+       [](const Scene& s) {
+         EXPECT_GT(s.surfaces.triangles.size(), 0u);
+         EXPECT_FALSE(s.has_motion());
+       }},
+      {"motion-points-count",
+       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nPoints \"P\" [0 0 0] \"constantwidth\" [1]\n"
+                                  "Points \"P\" [1 0 0  2 0 0] \"constantwidth\" [1]\nMotionEnd"),
+       error(4, "Points",
+             "its motion samples do not have as many points (\"P\"): the first sample is built without motion blur"),
+       [](const Scene& s) {
+         EXPECT_EQ(s.points.size(), 1u);
+         EXPECT_FALSE(s.has_motion());
+       }},
       {"motion-blur", "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nTranslate 0 0 0\nTranslate 0 2 0\nMotionEnd\n" + kLine3),
        std::nullopt,
        [](const Scene& s) {
          ASSERT_TRUE(s.curves.moving(0));
          Vec3f at[4];
          EXPECT_FLOAT_EQ(s.curves.control_points_at(0, 0.5f, at)[0].y, 1.0f) << "half-way at mid-shutter";
+       }},
+      {"camera-shutteropening", before_world("Camera \"main\" \"float[2] shutteropening\" [0.8 0.2]"),
+       error(1, "Camera", "\"shutteropening\" [0.8 0.2] must be times 0 <= a <= b <= 1: ignored"),
+       [](const Scene& s) { EXPECT_TRUE(s.output.shutter_opening.is_box()); }},
+      {"camera-shutteropening-count", before_world("Camera \"main\" \"float[3] shutteropening\" [0.1 0.2 0.3]"),
+       error(1, "Camera", "\"shutteropening\" takes 2 numbers (or RenderMan's 8), found 3: ignored"),
+       [](const Scene& s) { EXPECT_TRUE(s.output.shutter_opening.is_box()); }},
+      {"camera-shutteropening-curve",
+       before_world("Camera \"main\" \"float[8] shutteropening\" [0.25 0.75 0 0 0 0 0 0]"),
+       warning(1, "Camera",
+               "the shutter curve's control points (numbers 3 to 8 of \"shutteropening\") are not supported: the "
+               "shutter opens and closes linearly"),
+       [](const Scene& s) {
+         EXPECT_EQ(s.output.shutter_opening.fully_open, 0.25);
+         EXPECT_EQ(s.output.shutter_opening.starts_closing, 0.75);
        }},
       {"camera-singular", before_world("Scale 0 0 0"),
        warning(2, "WorldBegin", "the camera transform is singular: the identity is used instead"),

@@ -158,7 +158,10 @@ TEST(SceneBuilderMotion, AMovingCameraMovesTheWorldTheOtherWay) {
   ASSERT_TRUE(scene.curves.moving(0));
   EXPECT_FLOAT_EQ(point_at(scene.curves, 0, 0.0f, 0).x, 4.0f) << "the camera renders from where it is at open";
   EXPECT_FLOAT_EQ(point_at(scene.curves, 0, 1.0f, 0).x, 1.0f);
-  EXPECT_TRUE(has_warning(b, "motion blur of Sphere under a moving transform is not supported"));
+  EXPECT_TRUE(scene.surfaces.spheres.empty()) << "a moving sphere is a moving triangle mesh";
+  ASSERT_GT(scene.surfaces.triangles.size(), 0u);
+  EXPECT_TRUE(scene.surfaces.triangles.moving(0));
+  EXPECT_FALSE(has_warning(b, "motion blur"));
 }
 
 TEST(SceneBuilderMotion, ACameraBlockWhoseSamplesAgreeMovesNothing) {
@@ -180,6 +183,53 @@ TEST(SceneBuilderMotion, UnderAMovingCameraTheWorldsSpacesMoveAndCameraSpaceStay
   ASSERT_TRUE(cs.moving(0));
   EXPECT_FLOAT_EQ(point_at(cs, 0, 1.0f, 0).x, 1.0f) << "placed in the world: moves with it";
   EXPECT_FALSE(cs.moving(1)) << "placed in camera space: stays where the image's camera sees it";
+}
+
+TEST(SceneBuilderMotion, ADeformingSubdivisionMeshAndPatchMoveTheirTessellation) {
+  Built b = build_world("Shutter 0 1",
+                        "MotionBegin [0 1]\n"
+                        "SubdivisionMesh \"catmull-clark\" [4] [0 1 2 3] [\"interpolateboundary\"] [0 0] [] [] \"P\" [0 0 5  1 0 5  1 1 5  0 1 5]\n"
+                        "SubdivisionMesh \"catmull-clark\" [4] [0 1 2 3] [\"interpolateboundary\"] [0 0] [] [] \"P\" [0 0 5  1 0 5  1 1 7  0 1 7]\n"
+                        "MotionEnd\n"
+                        "MotionBegin [0 1]\n"
+                        "Patch \"bilinear\" \"P\" [4 0 5  5 0 5  4 1 5  5 1 5]\n"
+                        "Patch \"bilinear\" \"P\" [4 0 5  5 0 5  4 3 5  5 3 5]\n"
+                        "MotionEnd\n");
+  const TriangleStore& t = b.scenes.at(0).surfaces.triangles;
+  ASSERT_GT(t.size(), 2u);
+  float subdivision_rise = 0, patch_reach = 0;
+  for (uint32_t i = 0; i < t.size(); ++i) {
+    ASSERT_TRUE(t.moving(i)) << i;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3f open = t.corner(i, k, 0.0f), close = t.corner(i, k, 1.0f);
+      if (open.x < 2) subdivision_rise = std::max(subdivision_rise, close.z - open.z);
+      if (open.x > 3) patch_reach = std::max(patch_reach, close.y);
+      EXPECT_FLOAT_EQ(open.x, close.x);
+    }
+  }
+  EXPECT_GT(subdivision_rise, 1.0f) << "the limit surface's far edge rises towards z = 7";
+  EXPECT_FLOAT_EQ(patch_reach, 3.0f);
+  for (const Diagnostic& d : b.diagnostics) ADD_FAILURE() << d.str();
+}
+
+TEST(SceneBuilderMotion, PointsMoveWithTheirSamplesAndWithAMovingTransform) {
+  Built b = build_world("Shutter 0 1",
+                        "MotionBegin [0 1]\nPoints \"P\" [0 0 5  1 0 5] \"width\" [0.1 0.1]\n"
+                        "Points \"P\" [0 2 5  1 0 5] \"width\" [0.2 0.1]\nMotionEnd\n"
+                        "MotionBegin [0 1]\nTranslate 0 0 0\nTranslate 3 0 0\nMotionEnd\n"
+                        "Points \"P\" [0 0 5] \"constantwidth\" [1]\n");
+  const PointSet& p = b.scenes.at(0).points;
+  ASSERT_EQ(p.size(), 3u);
+  ASSERT_TRUE(p.moving(0));
+  EXPECT_FALSE(p.moving(1)) << "a point whose samples agree stays";
+  EXPECT_FLOAT_EQ(p.center_at(0, 0.5f).y, 1.0f);
+  EXPECT_FLOAT_EQ(p.radius_at(0, 1.0f), 0.1f);
+  EXPECT_FLOAT_EQ(p.radius_at(0, 0.0f), 0.05f);
+  EXPECT_GE(p.bounds(0).hi.y, 2.1f) << "the box holds the whole shutter";
+  ASSERT_TRUE(p.moving(2));
+  EXPECT_FLOAT_EQ(p.center_at(2, 1.0f).x, 3.0f);
+  EXPECT_FLOAT_EQ(p.center[2].x, 0.0f) << "the point at shutter open";
+  for (const Diagnostic& d : b.diagnostics) ADD_FAILURE() << d.str();
 }
 
 }  // namespace
