@@ -17,7 +17,9 @@ constexpr int kMinPerTurn = 32, kMaxPerTurn = 1024, kPerTurnWithoutView = 64;
 int per_turn(double radius, double pixel) {
   if (!(pixel > 0) || !(std::abs(radius) > 0)) return kPerTurnWithoutView;
   const double angle = std::sqrt(8 * kSagittaPixels * pixel / std::abs(radius));
-  return std::clamp(int(std::ceil(2 * std::numbers::pi / angle)), kMinPerTurn, kMaxPerTurn);
+  // Clamped as a double: a huge radius over a tiny pixel would overflow an int.
+  const double count = std::ceil(2 * std::numbers::pi / angle);
+  return int(std::clamp(std::isfinite(count) ? count : double(kMaxPerTurn), double(kMinPerTurn), double(kMaxPerTurn)));
 }
 
 int intervals(int turn, double sweep) {
