@@ -95,7 +95,8 @@ void SceneBuilder::add_points(const PrimitiveRequest&, const ParamList& params, 
   if (count == 0) return;
   // A point costs less than a curve segment (24 bytes against 81) with the same share of the BVH
   // build: counting it as one keeps the estimate above what it needs.
-  if (!captured_points_ && !reserve_frame_memory(count, 0, 0)) return;
+  // Every key of moving points is counted too: their keys are kept as long as the frame.
+  if (!reserve_frame_memory(count, 0, 0)) return;
 
   // Widths are measured in object space: scaled as Curves scales them (the cube root of the
   // volume scale, exact for uniform scale).

@@ -126,6 +126,9 @@ TriangleMeshData mesh_in_world(const TriangleMeshData& object_space, const Matri
 size_t SceneBuilder::add_triangle_mesh(const TriangleMeshData& object_space, uint32_t material,
                                        const std::vector<PositionSample>* samples) {
   if (captured_meshes_) {
+    // A motion sample held until the block's end: counted as the frame's memory, as its keys will
+    // be (a block of many samples of a large mesh stops at the memory limit, not past it).
+    if (!reserve_frame_memory(0, object_space.triangle_count(), object_space.P.size())) return 0;
     captured_meshes_->push_back({object_space, material});
     return object_space.triangle_count();
   }
@@ -173,6 +176,13 @@ void SceneBuilder::end_tessellated_motion(const MotionBlock& block) {
   const std::string& name = first.request.name;
   const PrimitiveBuilder builder = find_primitive_builder(name);
   if (builder == nullptr) return;
+  // A frame that is not built (not selected, or over its memory) tessellates nothing.
+  try {
+    if (!building_geometry(name.c_str(), first.loc)) return;
+  } catch (const RibError& e) {
+    diag_.error(first.loc, name, e.what());
+    return;
+  }
   auto build_first_alone = [&] {
     try {
       if (!building_geometry(name.c_str(), first.loc)) return;

@@ -45,5 +45,19 @@ TEST(FuzzRegressions, ObjectsBeforeTheWorldBlockStillWork) {
   EXPECT_EQ(b.scenes[0].surfaces.spheres.size(), 1u);
 }
 
+// darc_fuzz_scene: null Scene (UBSan). A motion block of quadrics before WorldBegin (where a
+// camera's block goes): its samples were tessellated at MotionEnd before the builder checked that
+// a world (and its scene) was there.
+TEST(FuzzRegressions, AMotionBlockOfPrimitivesBeforeTheWorldIsAnError) {
+  for (const std::string samples : {"Sphere 1 -1 1 360\nSphere 2 -2 2 360\n", "Points \"P\" [0 0 0]\nPoints \"P\" [1 0 0]\n",
+                                    "Polygon \"P\" [0 0 0 1 0 0 0 1 0]\nPolygon \"P\" [0 0 0 2 0 0 0 1 0]\n"}) {
+    Built b = build("Shutter 0 1\nMotionBegin [0 1]\n" + samples + "MotionEnd\nWorldBegin\nWorldEnd\n");
+    ASSERT_EQ(b.scenes.size(), 1u) << samples;
+    EXPECT_EQ(b.scenes[0].surfaces.size() + b.scenes[0].points.size(), 0u) << samples;
+    const Diagnostic error = first_error(b);
+    EXPECT_NE(error.message.find("outside WorldBegin/WorldEnd"), std::string::npos) << samples << error.message;
+  }
+}
+
 }  // namespace
 }  // namespace darc::test
