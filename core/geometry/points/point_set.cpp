@@ -1,5 +1,7 @@
 #include "core/geometry/points/point_set.h"
 
+#include "core/math/motion_keys.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -22,20 +24,6 @@ BBox PointSet::bounds(size_t i) const {
   }
   return box;
 }
-
-namespace {
-
-// The key interval holding `time` (clamped to [0, 1]) among times[0..count): its first key and
-// the fraction through it.
-void key_interval(const float* times, uint32_t count, float time, uint32_t& k, float& s) {
-  time = std::clamp(time, 0.0f, 1.0f);
-  k = 0;
-  while (k + 2 < count && times[k + 1] <= time) ++k;
-  const float span = times[k + 1] - times[k];
-  s = span > 0 ? std::clamp((time - times[k]) / span, 0.0f, 1.0f) : 0.0f;
-}
-
-}  // namespace
 
 Vec3f PointSet::center_at(size_t i, float time) const {
   if (!moving(i)) return center[i];

@@ -1,5 +1,7 @@
 #include "core/geometry/surfaces/triangle_store.h"
 
+#include "core/math/motion_keys.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -107,20 +109,6 @@ size_t TriangleStore::add_moving(std::span<const float> times, std::span<const T
   motions_.push_back(motion);
   return added;
 }
-
-namespace {
-
-// The key interval holding `time` (clamped to [0, 1]) among keys times[0..count) (0 first, 1
-// last): the interval's first key and the fraction through it.
-void key_interval(const float* times, uint32_t count, float time, uint32_t& k, float& s) {
-  time = std::clamp(time, 0.0f, 1.0f);
-  k = 0;
-  while (k + 2 < count && times[k + 1] <= time) ++k;
-  const float span = times[k + 1] - times[k];
-  s = span > 0 ? std::clamp((time - times[k]) / span, 0.0f, 1.0f) : 0.0f;
-}
-
-}  // namespace
 
 bool TriangleStore::moving(uint32_t triangle) const {
   if (vertex_motion_.empty()) return false;
