@@ -14,36 +14,11 @@
 #include <set>
 #include <sstream>
 
+#include "core/scene/builder/parameter_validation_rows.h"
 #include "support/scenes_from_rib.h"
 
 namespace darc::test {
 namespace {
-
-struct Expected {
-  Severity severity;
-  int line, column;
-  std::string request;
-  std::string message;
-};
-
-Expected error(int line, const std::string& request, const std::string& message) {
-  return {Severity::Error, line, 1, request, message};
-}
-Expected warning(int line, const std::string& request, const std::string& message) {
-  return {Severity::Warning, line, 1, request, message};
-}
-
-struct Row {
-  std::string id;  // the ID column of docs/parameters.md
-  std::string rib;
-  std::optional<Expected> expected;  // nullopt: a valid value, nothing is reported
-  std::function<void(const Scene&)> result;
-};
-
-// `requests` start on line 1, before an empty world block.
-std::string before_world(const std::string& requests) { return requests + "\nWorldBegin\nWorldEnd\n"; }
-// `requests` start on line 2, inside the world block.
-std::string in_world(const std::string& requests) { return "WorldBegin\n" + requests + "\nWorldEnd\n"; }
 
 float param(const ParamList& params, const char* name) {
   const Param* p = params.find(name);
@@ -52,9 +27,6 @@ float param(const ParamList& params, const char* name) {
 }
 
 constexpr float kFloatMax = std::numeric_limits<float>::max();
-// The name build() gives its text in messages.
-const std::string kRibName = "test.rib";
-const std::string kLine3 = "Curves \"linear\" [3] \"nonperiodic\" \"P\" [0 0 0  1 0 0  2 0 0]";
 
 std::vector<Row> option_rows() {
   return {
@@ -204,96 +176,6 @@ std::vector<Row> transform_rows() {
        }},
       {"perspective-fov", in_world("Perspective 0"), error(2, "Perspective", "Perspective fov must be in (0, 180)"),
        [](const Scene&) {}},
-      {"motion-times", in_world("MotionBegin [1 0]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd"),
-       error(2, "MotionBegin", "times must increase, found [1 0]: the block keeps its first sample"),
-       [](const Scene& s) { EXPECT_EQ(s.surfaces.spheres.size(), 1u); }},
-      {"motion-count", "Shutter 0 1\n" + in_world("MotionBegin [0 0.5 1]\nTranslate 1 0 0\nTranslate 2 0 0\nMotionEnd\n" + kLine3),
-       error(6, "MotionEnd", "the block at " + kRibName + ":3:1 has 3 times but 2 requests: it keeps its first sample"),
-       [](const Scene& s) {
-         EXPECT_FALSE(s.curves.has_motion());
-         EXPECT_FLOAT_EQ(s.curves.cp[0].x, 1.0f) << "the first sample";
-       }},
-      {"motion-mixed", "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nTranslate 1 0 0\nRotate 90 0 0 1\nMotionEnd\n" + kLine3),
-       error(5, "Rotate",
-             "a motion block holds one kind of request: Rotate after Translate (block at " + kRibName +
-                 ":3:1); the block keeps its first sample"),
-       [](const Scene& s) {
-         EXPECT_FALSE(s.curves.has_motion());
-         EXPECT_FLOAT_EQ(s.curves.cp[0].x, 1.0f) << "the first sample";
-       }},
-      {"motion-nested", in_world("MotionBegin [0 1]\nMotionBegin [0 1]\nMotionEnd"),
-       error(3, "MotionBegin", "MotionBegin inside the motion block opened at " + kRibName + ":2:1"),
-       [](const Scene&) {}},
-      {"motion-curves-topology",
-       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\n" + kLine3 +
-                                  "\nCurves \"linear\" [2] \"nonperiodic\" \"P\" [0 0 0  1 0 0]\nMotionEnd"),
-       error(5, "Curves",
-             "motion sample 2 is not the same curves as the first (type, wrap and vertex counts must agree): the first "
-             "sample is built without motion blur"),
-       [](const Scene& s) {
-         EXPECT_EQ(s.curves.size(), 2u);
-         EXPECT_FALSE(s.curves.has_motion());
-       }},
-      {"motion-polygons-topology",
-       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nPointsPolygons [3] [0 1 2] \"P\" [0 0 0  1 0 0  0 1 0]\n"
-                                  "PointsPolygons [3] [0 2 1] \"P\" [0 0 0  1 0 0  0 1 0]\nMotionEnd"),
-       error(5, "PointsPolygons",
-             "motion sample 2 is not the same mesh as the first (faces, loops and vertex indices must agree): the "
-             "first sample is built without motion blur"),
-       [](const Scene& s) {
-         EXPECT_EQ(s.surfaces.polygons.size(), 1u);
-         EXPECT_FALSE(s.has_motion());
-       }},
-      {"motion-polygons-concave",
-       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nTranslate 0 0 0\nTranslate 1 0 0\nMotionEnd\n"
-                                  "Polygon \"P\" [0 0 0  2 0 0  1 0.5 0  2 2 0  0 2 0]"),
-       warning(7, "Polygon", "motion blur of polygons with holes or concave faces is not supported: built at shutter open"),
-       [](const Scene& s) {
-         EXPECT_EQ(s.surfaces.polygons.size(), 1u);
-         EXPECT_FALSE(s.has_motion());
-       }},
-      {"motion-tessellation-differs",
-       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nSubdivisionMesh \"catmull-clark\" [4] [0 1 2 3] "
-                                  "[\"interpolateboundary\"] [0 0] [] [] \"P\" [0 0 0  1 0 0  1 1 0  0 1 0]\nSubdivisionMesh \"catmull-clark\" [3 3] [0 1 2  0 2 3] "
-                                  "[\"interpolateboundary\"] [0 0] [] [] \"P\" [0 0 0  1 0 0  1 1 0  0 1 0]\nMotionEnd"),
-       warning(4, "SubdivisionMesh",
-               "its motion samples do not tessellate alike (topology, or a dicing rate that changed with the shape): "
-               "the first sample is built without motion blur"),
-       [](const Scene& s) {
-         EXPECT_GT(s.surfaces.triangles.size(), 0u);
-         EXPECT_FALSE(s.has_motion());
-       }},
-      {"motion-points-count",
-       "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nPoints \"P\" [0 0 0] \"constantwidth\" [1]\n"
-                                  "Points \"P\" [1 0 0  2 0 0] \"constantwidth\" [1]\nMotionEnd"),
-       error(4, "Points",
-             "its motion samples do not have as many points (\"P\"): the first sample is built without motion blur"),
-       [](const Scene& s) {
-         EXPECT_EQ(s.points.size(), 1u);
-         EXPECT_FALSE(s.has_motion());
-       }},
-      {"motion-blur", "Shutter 0 1\n" + in_world("MotionBegin [0 1]\nTranslate 0 0 0\nTranslate 0 2 0\nMotionEnd\n" + kLine3),
-       std::nullopt,
-       [](const Scene& s) {
-         ASSERT_TRUE(s.curves.moving(0));
-         Vec3f at[4];
-         EXPECT_FLOAT_EQ(s.curves.control_points_at(0, 0.5f, at)[0].y, 1.0f) << "half-way at mid-shutter";
-       }},
-      {"camera-shutteropening", before_world("Camera \"main\" \"float[2] shutteropening\" [0.8 0.2]"),
-       error(1, "Camera", "\"shutteropening\" [0.8 0.2] must be times 0 <= a <= b <= 1: ignored"),
-       [](const Scene& s) { EXPECT_TRUE(s.output.shutter_opening.is_box()); }},
-      {"camera-shutteropening-count", before_world("Camera \"main\" \"float[3] shutteropening\" [0.1 0.2 0.3]"),
-       error(1, "Camera", "\"shutteropening\" takes 2 numbers (or RenderMan's 8), found 3: ignored"),
-       [](const Scene& s) { EXPECT_TRUE(s.output.shutter_opening.is_box()); }},
-      {"camera-shutteropening-curve",
-       before_world("Camera \"main\" \"float[8] shutteropening\" [0.25 0.75 0 0 0 0 0 0]"),
-       warning(1, "Camera",
-               "the shutter curve's control points (numbers 3 to 8 of \"shutteropening\") are not supported: the "
-               "shutter opens and closes linearly"),
-       [](const Scene& s) {
-         EXPECT_EQ(s.output.shutter_opening.fully_open, 0.25);
-         EXPECT_EQ(s.output.shutter_opening.starts_closing, 0.75);
-       }},
       {"camera-singular", before_world("Scale 0 0 0"),
        warning(2, "WorldBegin", "the camera transform is singular: the identity is used instead"),
        [](const Scene& s) { EXPECT_EQ(s.camera.world_to_camera, Matrix4{}); }},
@@ -532,13 +414,11 @@ std::vector<Row> geometry_rows() {
 std::vector<Row> all_rows() {
   std::vector<Row> rows;
   for (auto part :
-       {option_rows(), unused_request_rows(), transform_rows(), attribute_rows(), shader_rows(), geometry_rows()})
+       {option_rows(), unused_request_rows(), transform_rows(), motion_rows(), attribute_rows(), shader_rows(),
+        geometry_rows()})
     rows.insert(rows.end(), part.begin(), part.end());
   return rows;
 }
-
-// gtest names a failing row by its ID, not by its bytes.
-void PrintTo(const Row& row, std::ostream* os) { *os << row.id; }
 
 class ParameterValidation : public ::testing::TestWithParam<Row> {};
 
