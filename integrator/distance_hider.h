@@ -17,6 +17,7 @@
 #include "core/geometry/surfaces/surface_hit.h"
 #include "integrator/stochastic_hider.h"
 
+#include <array>
 #include <limits>
 
 #include <vector>
@@ -73,6 +74,11 @@ struct SurfaceFragment {
   float coverage = 0;
   CoverageMask mask = 0;
   int point = -1;  // the sub-ray whose hit is shaded (-1: the ray itself)
+  // When the surface covers the whole footprint: its depths at the four corner mask points
+  // (columns 0 and 7 of rows 0 and 7, in that order), for a surface whose depth changes much
+  // across the footprint (split_by_depth).
+  bool whole = false;
+  std::array<float, 4> corner_t{};
 };
 
 // The rectangle of footprint mask points [col0, col1] x [row0, row1] whose sub-rays can meet
@@ -112,9 +118,16 @@ bool surface_coverage(const Ray& ray, const RayFootprint& footprint, HitSurface&
     }
     const int corners[4] = {0, kMaskSide - 1, kLast - (kMaskSide - 1), kLast};
     int corner_hits = 0;
-    for (int c : corners) corner_hits += hit_surface(footprint_sub_ray(ray, footprint, c), h);
+    std::array<float, 4> corner_t{};
+    for (int k = 0; k < 4; ++k)
+      if (hit_surface(footprint_sub_ray(ray, footprint, corners[k]), h)) {
+        ++corner_hits;
+        corner_t[size_t(k)] = h.t;
+      }
     if (centre && corner_hits == 4) {
       out = {centre_t, 1.0f, kFullMask, -1};
+      out.whole = true;
+      out.corner_t = corner_t;
       return true;
     }
     if (!centre && corner_hits == 0 && !piece) return false;

@@ -62,6 +62,9 @@ struct RayFootprint {
   // General form: where along the ray the footprint is about smallest (a lens's focal plane),
   // the apex of its reach bound; 0 (the origin) when nothing better is known.
   float waist_t = 0;
+  // A camera ray's footprint widened by its lens (DepthOfField): it holds the circle of
+  // confusion, and a surface's depth may change across it by far more than across a pixel.
+  bool through_lens = false;
 
   Vec3f axis_x(float t) const { return dox + ddx * t; }
   Vec3f axis_y(float t) const { return doy + ddy * t; }

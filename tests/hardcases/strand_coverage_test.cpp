@@ -76,5 +76,44 @@ TEST(StrandCoverage, SquareModelMatchesStochasticReferenceWithinTwoPercent) {
   EXPECT_LE(worst[0], kSquarePixelTolerance);
 }
 
+// The joints a strand runs straight through keep its area: a straight strand of width w and
+// length L (ends and joints mid-pixel) sums to the same alpha as one segment or as three cut at
+// two joints, at any angle, and to w L pixels when it runs along the pixel grid (where the product
+// of the band's and the end line's coverage is exact; tilted, a square footprint's corner past
+// the end makes it about 1 % low for this short strand at 30 degrees). The band past a cut end
+// used to be measured from the end point instead of across the strand: the two pieces at each
+// joint lost about 0.05 pixel of length together (3 % of this strand at 30 degrees).
+TEST(StrandCoverage, JointsKeepTheStrandsArea) {
+  constexpr int kSize = 16;
+  constexpr double kWidth = 0.6, kLength = 5.37;
+  auto alpha_sum = [&](double angle, int segments) {
+    const double a = angle * std::numbers::pi / 180, dx = std::cos(a), dy = std::sin(a);
+    std::ostringstream world;
+    world.precision(9);
+    world << "Curves \"linear\" [" << segments + 1 << "] \"nonperiodic\" \"P\" [";
+    for (int k = 0; k <= segments; ++k) {
+      const double s = k == 0 ? 0.0 : k == segments ? 1.0 : (k == 1 ? 0.29 : 0.71);  // uneven joints
+      const double along = (s - 0.5) * kLength;
+      world << 0.21 + along * dx << " " << -0.13 + along * dy << " 5 ";
+    }
+    world << "] \"constantwidth\" [" << kWidth << "]\n";
+    const Image image =
+        render_rib(orthographic_frame(kSize, kSize, 1, world.str()), single_thread(HiderKind::Distance)).image;
+    double sum = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) sum += image.at(x, y, 3);
+    return sum;
+  };
+  const double area = kWidth * kLength;
+  for (double angle : {0.0, 30.0, 73.0, 90.0}) {
+    const double one = alpha_sum(angle, 1), three = alpha_sum(angle, 3);
+    EXPECT_NEAR(three, one, 0.002 * area) << "angle " << angle << " degrees";
+    if (angle == 0.0 || angle == 90.0) {
+      EXPECT_NEAR(one, area, 0.002 * area) << "angle " << angle << " degrees";
+      EXPECT_NEAR(three, area, 0.002 * area) << "angle " << angle << " degrees";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace darc::test

@@ -102,6 +102,34 @@ TEST(DepthOfFieldRender, AStrandOnTheFocalPlaneIsAsSharpAsThroughAPinhole) {
   }
 }
 
+// Strands standing on a ground seen through a lens, low over it: the ground's depth changes
+// across a footprint by far more than across a pixel, so a strand's root is in front of the
+// ground in part of the footprint and behind it in the rest. The distance hider keeps the
+// strands' light (red) within 2 % of the stochastic hider's lens samples. Measured: 1.1 % low;
+// 3.0 % low when the ground was one fragment at its centre's depth and strands behind that
+// depth were culled.
+TEST(DepthOfFieldRender, StrandsOnAGroundKeepTheirLightThroughALens) {
+  const std::string scene =
+      "Format 64 48 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\n"
+      "Projection \"perspective\" \"fov\" [30]\nDepthOfField 1.4 0.2 12\n"
+      "Rotate -3 1 0 0\nTranslate 0 -0.15 0\nWorldBegin\nSurface \"constant\"\n"
+      "AttributeBegin\nColor [0 1 0]\nPolygon \"P\" [-20 0 -5  20 0 -5  20 0 60  -20 0 60]\nAttributeEnd\n"
+      "Color [1 0 0]\nCurves \"linear\" [2 2 2] \"nonperiodic\" \"P\" [-0.4 0 3 -0.4 0.3 3  0 0 3 0 0.3 3  "
+      "0.4 0 3 0.4 0.3 3] \"constantwidth\" [0.01]\nWorldEnd\n";
+  auto red = [](const Image& image) {
+    double sum = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) sum += image.at(x, y, 0);
+    return sum;
+  };
+  std::string reference_scene = scene;
+  reference_scene.replace(reference_scene.find("PixelSamples 1 1"), 16, "PixelSamples 16 16");
+  const double reference = red(render_image(reference_scene, HiderKind::Stochastic, 2));
+  const double distance = red(render_image(scene, HiderKind::Distance));
+  ASSERT_GT(reference, 1.0) << "the strands are in the picture";
+  EXPECT_NEAR(distance, reference, 0.02 * reference);
+}
+
 TEST(DepthOfFieldRender, TheImageIsTheSameForAnyThreadCount) {
   std::string scene = strand_scene(6, 5, 2);
   scene.insert(scene.find("WorldEnd"),
