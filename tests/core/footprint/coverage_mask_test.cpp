@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include <cmath>
 
@@ -12,6 +15,10 @@ namespace darc {
 namespace {
 
 const FootprintSquare kUnit{1, 0, 0, 1};
+constexpr int kMaskPoints = kMaskSide * kMaskSide;
+// Mask point b's footprint coordinates, as nearest_points_mask computes them.
+float mask_point_u_of(int b) { return (float(b % kMaskSide) + 0.5f) * (1.0f / kMaskSide) - 0.5f; }
+float mask_point_v_of(int b) { return (float(b / kMaskSide) + 0.5f) * (1.0f / kMaskSide) - 0.5f; }
 
 TEST(CoverageMask, CentredVerticalBandCoversTheMiddleColumns) {
   // A vertical strand (normal +x) of width 0.25 through the centre covers columns 3 and 4
@@ -134,6 +141,40 @@ TEST(CoverageMask, ASweptLineTakesThePointsItPassesAtTheirTimes) {
   // Two lines a third of a square apart take different points.
   const SweptLine later{0, 1, -1.33f, 0.67f, true};
   EXPECT_EQ(m & nearest_points_mask(sq, 0, 0, 1, 0, false, 8, kFullMask, &later), 0u);
+}
+
+// The nearest points are the `count` smallest (distance, index) pairs among the allowed points,
+// whichever way they are selected (a short sorted list for few points, nth_element for many):
+// checked against a full sort, for lines, end-on points and masks that forbid points, with ties
+// (a line along the grid puts whole columns at one distance).
+TEST(CoverageMask, NearestPointsAreTheSmallestDistancesTiesToTheLowerIndex) {
+  const FootprintSquare tilted{0.9f, 0.3f, -0.2f, 1.1f};
+  uint64_t state = 12345;
+  auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return float(state >> 40) / float(1 << 24);
+  };
+  for (int trial = 0; trial < 200; ++trial) {
+    const FootprintSquare& sq = trial % 3 == 0 ? kUnit : tilted;
+    const bool point = trial % 5 == 0;
+    const float angle = trial % 4 == 0 ? 0.0f : 6.2831853f * next();
+    const float nx = std::cos(angle), ny = std::sin(angle);
+    const float cx = next() - 0.5f, cy = next() - 0.5f;
+    const CoverageMask allowed = trial % 2 == 0 ? kFullMask : (CoverageMask(state) | 1u);
+    const int count = 1 + trial % kMaskPoints;
+    std::vector<std::pair<float, int>> order;
+    for (int b = 0; b < kMaskPoints; ++b) {
+      if (!((allowed >> b) & 1)) continue;
+      const float u = mask_point_u_of(b), v = mask_point_v_of(b);
+      const float px = u * sq.ax_x + v * sq.ay_x - cx, py = u * sq.ax_y + v * sq.ay_y - cy;
+      order.push_back({point ? px * px + py * py : std::abs(px * nx + py * ny), b});
+    }
+    std::sort(order.begin(), order.end());
+    CoverageMask expected = 0;
+    for (int k = 0; k < count && k < int(order.size()); ++k) expected |= CoverageMask{1} << order[size_t(k)].second;
+    EXPECT_EQ(nearest_points_mask(sq, cx, cy, nx, ny, point, count, allowed), expected)
+        << "trial " << trial << ", count " << count;
+  }
 }
 
 }  // namespace
