@@ -19,6 +19,7 @@ struct AppOptions {
   int pixel_samples = 0;            // --pixel-samples N (N x N); 0 keeps PixelSamples
   int threads = 0;
   std::optional<float> contribution_threshold;  // --contribution-threshold (unset: the default)
+  bool area_light_cones = true;  // --area-shadows cone (default) | sampled
   std::optional<FrameList> frames;
   bool skip_existing = false;
   bool strict = false;              // --strict: ErrorHandler "abort" for the whole run, whatever the RIB says

@@ -77,6 +77,11 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
                  "secondary rays that can change the pixel by less than this are not traced (0: trace all; "
                  "default " + std::to_string(kDefaultContributionThreshold) + ")")
       ->check(CLI::Range(0.0f, 1.0f));
+  std::string area_shadows = "cone";
+  app.add_option("--area-shadows", area_shadows,
+                 "distance hider, lights with extent: one cone shadow ray from the receiving footprint to the "
+                 "light (cone, default) | a footprint shadow ray per light sample (sampled)")
+      ->check(CLI::IsMember({"cone", "sampled"}));
   std::string frames;
   app.add_option("--frames", frames, "frames to render, e.g. 1-10,15,20-40x5");
   app.add_flag("--skip-existing", o.skip_existing,
@@ -146,6 +151,7 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
     }
     o.hider = hider == "distance" ? HiderKind::Distance : HiderKind::Stochastic;
     if (contribution_threshold >= 0) o.contribution_threshold = contribution_threshold;
+    o.area_light_cones = area_shadows == "cone";
   } catch (const CLI::ParseError& e) {
     exit_now = true;
     // CLI11 returns its own codes (100+) for usage errors; ours is 2 (libraries.md §6).

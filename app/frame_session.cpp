@@ -171,6 +171,7 @@ void FrameSession::frame_ready(Scene&& scene) {
   ro.threads = o_.threads;
   ro.seed = o_.seed;
   if (o_.contribution_threshold) ro.contribution_threshold = *o_.contribution_threshold;
+  ro.distance.area_light_cones = o_.area_light_cones;
   ro.progress = [&](double f) { progress_.update(f); };
   progress_.start(path);
   Image image = render_frame(scene, ro, diag_, stats);

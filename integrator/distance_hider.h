@@ -45,6 +45,10 @@ struct DistanceHiderSettings {
   // on the swinging tuft (bench, --size blur) one stretch gave RMSE 0.0046, two 0.0030, four
   // 0.0022 (the reference's own noise about 0.0015).
   int time_strata = 4;
+  // Area lights (rect, disc, sphere) cast one cone shadow ray per shading point, whose footprint
+  // grows from the receiving patch to the light's extent, instead of one shadow ray per light
+  // sample (--area-shadows sampled turns it off).
+  bool area_light_cones = true;
 };
 
 // Per-frame data the distance hider needs besides the HiderContext.

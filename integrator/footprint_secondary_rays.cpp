@@ -47,11 +47,14 @@ Vec3f FootprintSecondaryRays::shadow_transmittance(const Interaction& at, const 
                                        stopping_transmittance(s, path.weight, kDistanceMinTransmittance));
 }
 
-bool FootprintSecondaryRays::cone_shadow_transmittance(const Interaction& at, const Vec3f& l, float half_angle,
-                                                       const RayFootprint* incoming, const PathState& path,
-                                                       Vec3f& transmittance) {
+bool FootprintSecondaryRays::cone_shadow_transmittance(const Interaction& at, const Vec3f& l, float distance,
+                                                       float half_angle, const RayFootprint* incoming,
+                                                       const PathState& path, Vec3f& transmittance) {
+  if (std::isfinite(distance) && !ctx_.settings.area_light_cones) return false;
+  // Toward a light at a distance the shadow footprint is a pencil from the receiving patch to
+  // the light's centre; widened by the cone, it reaches the square of the light's disc there.
   cone_ = half_angle;
-  transmittance = shadow_transmittance(at, l, std::numeric_limits<float>::infinity(), incoming, path);
+  transmittance = shadow_transmittance(at, l, distance, incoming, path);
   cone_ = 0;
   return true;
 }

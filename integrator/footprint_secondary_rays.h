@@ -26,8 +26,8 @@ class FootprintSecondaryRays : public SecondaryRayTracer {
 
   Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance, const RayFootprint* incoming,
                              const PathState& path) override;
-  bool cone_shadow_transmittance(const Interaction& at, const Vec3f& l, float half_angle, const RayFootprint* incoming,
-                                 const PathState& path, Vec3f& transmittance) override;
+  bool cone_shadow_transmittance(const Interaction& at, const Vec3f& l, float distance, float half_angle,
+                                 const RayFootprint* incoming, const PathState& path, Vec3f& transmittance) override;
   Vec3f radiance(const Interaction& at, const Ray& ray, const RayFootprint* footprint, const PathState& next,
                  const Vec3f& beyond) override;
 

@@ -83,9 +83,10 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
   // matters are each small, and pruning them one by one took the whole light as unoccluded.
   // `cone` > 0: the light is a small disc at infinity seen along lc.L, and its shadow is the mean
   // over that cone, in one ray when the tracer can (else the light is sampled: false).
-  auto add_light = [&](const Light& light, const LightContribution& lc, float share, float cone = 0.0f) {
-    const Vec3f whole = shader.response(sp, lobes, lc);
-    const Vec3f unoccluded = whole * share;
+  // `whole`: the light's whole contribution as estimated (what prunes its shadow rays);
+  // `unoccluded`: the part this shadow ray stands for, toward unit direction L, `distance` away.
+  auto add_shadowed = [&](const Light& light, const Vec3f& whole, const Vec3f& unoccluded, const Vec3f& L,
+                          float distance, float cone) {
     if (!light.casts_shadows() || max_component(unoccluded) <= 0) {
       c += unoccluded;
       return true;
@@ -98,15 +99,20 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
     }
     if (cone > 0) {
       Vec3f transmittance;
-      if (!tracer.cone_shadow_transmittance(at, lc.L, cone, footprint, PathState{depth, shadow_weight}, transmittance))
+      if (!tracer.cone_shadow_transmittance(at, L, distance, cone, footprint, PathState{depth, shadow_weight},
+                                            transmittance))
         return false;
       counters.count_traced(SecondaryKind::Shadow);
       c += mul(unoccluded, transmittance);
       return true;
     }
     counters.count_traced(SecondaryKind::Shadow);
-    c += mul(unoccluded, tracer.shadow_transmittance(at, lc.L, lc.distance, footprint, PathState{depth, shadow_weight}));
+    c += mul(unoccluded, tracer.shadow_transmittance(at, L, distance, footprint, PathState{depth, shadow_weight}));
     return true;
+  };
+  auto add_light = [&](const Light& light, const LightContribution& lc, float share, float cone = 0.0f) {
+    const Vec3f whole = shader.response(sp, lobes, lc);
+    return add_shadowed(light, whole, whole * share, lc.L, lc.distance, cone);
   };
   uint32_t light_index = 0;
   for (const Light* light : shading.lights(at.material)) {
@@ -128,6 +134,22 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
       const float share = 1.0f / float(grid.count());
       // Surfaces respond in the hemisphere their faced-forward normal points to; strands all around.
       const Vec3f around = at.is_curve ? Vec3f{} : lobes.Nf;
+      // With a footprint, a light with extent casts one cone shadow ray: its samples light the
+      // point as if unoccluded, and their sum is dimmed by the mean transmittance over the cone
+      // from the receiving patch to the light (visibility taken as independent of where on the
+      // light the light comes from; docs/performance-area-shadows.md measures it).
+      LightExtent extent;
+      if (footprint && light->casts_shadows() && light->extent_toward(sp.P, extent)) {
+        Vec3f unoccluded;
+        for (int k = 0; k < grid.count(); ++k) {
+          float u0, u1;
+          grid.point(k, rotation, u0, u1);
+          if (light->sample(sp.P, around, u0, u1, lc)) unoccluded += shader.response(sp, lobes, lc) * share;
+        }
+        if (max_component(unoccluded) <= 0) continue;
+        if (add_shadowed(*light, unoccluded, unoccluded, extent.L, extent.distance, std::max(extent.half_angle, 1e-6f)))
+          continue;
+      }
       for (int k = 0; k < grid.count(); ++k) {
         float u0, u1;
         grid.point(k, rotation, u0, u1);

@@ -57,12 +57,13 @@ class SecondaryRayTracer {
   // the shadow ray's own weight (what its transmittance multiplies).
   virtual Vec3f shadow_transmittance(const Interaction& at, const Vec3f& l, float distance,
                                      const RayFootprint* footprint, const PathState& path) = 0;
-  // The mean transmittance toward a light at infinity over the cone of directions of half-angle
-  // `half_angle` around unit direction l, in one shadow ray whose footprint widens with the cone;
-  // false when this tracer cannot (exact rays: the light's samples are traced instead).
-  virtual bool cone_shadow_transmittance(const Interaction& /*at*/, const Vec3f& /*l*/, float /*half_angle*/,
-                                         const RayFootprint* /*footprint*/, const PathState& /*path*/,
-                                         Vec3f& /*transmittance*/) {
+  // The mean transmittance toward a light seen as a disc of half-angle `half_angle` around unit
+  // direction l, `distance` away (infinity: a sun), in one shadow ray whose footprint grows from
+  // the receiving patch to the disc's square; false when this tracer cannot (exact rays, or cone
+  // shadows turned off: the light's samples are traced instead).
+  virtual bool cone_shadow_transmittance(const Interaction& /*at*/, const Vec3f& /*l*/, float /*distance*/,
+                                         float /*half_angle*/, const RayFootprint* /*footprint*/,
+                                         const PathState& /*path*/, Vec3f& /*transmittance*/) {
     return false;
   }
   // The colour seen along a reflected or refracted ray from `at` (with its footprint, or null for

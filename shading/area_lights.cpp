@@ -21,6 +21,18 @@ class FlatAreaLight : public Light {
       : radiance_(radiance), samples_(samples), normal_(normal), area_(area) {}
   bool illuminate(const Vec3f&, LightContribution&, float) const override { return false; }
   int samples() const override { return samples_; }
+  // The shape's centre; the disc of its area foreshortened as P sees it.
+  bool extent_toward(const Vec3f& P, LightExtent& out) const override {
+    const Vec3f d = centre() - P;
+    const float dist = length(d);
+    if (!(dist > 0) || !(area_ > 0)) return false;
+    out.L = d / dist;
+    const float cos_l = -dot(normal_, out.L);
+    if (!(cos_l > 0)) return false;
+    out.distance = dist;
+    out.half_angle = std::atan(std::sqrt(area_ * cos_l / kPi) / dist);
+    return true;
+  }
   bool sample(const Vec3f& P, float u0, float u1, LightContribution& out) const override {
     const Vec3f X = point(u0, u1);
     const Vec3f d = X - P;
@@ -37,6 +49,7 @@ class FlatAreaLight : public Light {
 
  protected:
   virtual Vec3f point(float u0, float u1) const = 0;
+  virtual Vec3f centre() const = 0;
 
  private:
   Vec3f radiance_;
@@ -53,6 +66,7 @@ class RectLight : public FlatAreaLight {
 
  protected:
   Vec3f point(float u0, float u1) const override { return corner_ + ex_ * u0 + ey_ * u1; }
+  Vec3f centre() const override { return corner_ + (ex_ + ey_) * 0.5f; }
 
  private:
   Vec3f corner_, ex_, ey_;
@@ -70,6 +84,7 @@ class DiskLight : public FlatAreaLight {
     const Vec2f p = concentric_disc(u0, u1);
     return centre_ + a_ * p.x + b_ * p.y;
   }
+  Vec3f centre() const override { return centre_; }
 
  private:
   Vec3f centre_, a_, b_;
@@ -81,6 +96,16 @@ class SphereLight : public Light {
       : radiance_(radiance), samples_(samples), centre_(centre), radius_(radius) {}
   bool illuminate(const Vec3f&, LightContribution&, float) const override { return false; }
   int samples() const override { return samples_; }
+  // The cone the sphere subtends; the shadow ray ends on its near side.
+  bool extent_toward(const Vec3f& P, LightExtent& out) const override {
+    const Vec3f to_centre = centre_ - P;
+    const float d = length(to_centre);
+    if (!(d > radius_)) return false;
+    out.L = to_centre / d;
+    out.distance = d - radius_;
+    out.half_angle = std::asin(radius_ / d);
+    return true;
+  }
   bool sample(const Vec3f& P, float u0, float u1, LightContribution& out) const override {
     const Vec3f to_centre = centre_ - P;
     const float d2 = length_squared(to_centre);

@@ -18,6 +18,15 @@ struct LightContribution {
   float distance = 0;    // to the light position (infinity for distant lights)
 };
 
+// A light with extent as one shadow ray sees it from a point (Light::extent_toward): the unit
+// direction to its centre, how far a shadow ray toward it goes (to its plane, or a sphere's near
+// side), and the half-angle of the cone of the disc of the area it shows the point.
+struct LightExtent {
+  Vec3f L;
+  float distance = 0;
+  float half_angle = 0;
+};
+
 class Light {
  public:
   virtual ~Light() = default;
@@ -46,6 +55,11 @@ class Light {
   // radians (0: none). A tracer with footprints may trace one shadow ray whose footprint widens
   // with that cone instead of samples() rays (SecondaryRayTracer::cone_shadow_transmittance).
   virtual float cone_half_angle() const { return 0.0f; }
+  // A light with extent (shading/area_lights.h) as one target: what a single shadow ray whose
+  // footprint grows from the receiver to the light's extent aims at
+  // (SecondaryRayTracer::cone_shadow_transmittance). False for lights without extent, and where P
+  // sees none of it (behind a flat light's lit side, inside a sphere light).
+  virtual bool extent_toward(const Vec3f& /*P*/, LightExtent& /*out*/) const { return false; }
   // Whether occluders between P and the light are looked for (LightDesc::casts_shadows).
   bool casts_shadows() const { return casts_shadows_; }
   void set_casts_shadows(bool on) { casts_shadows_ = on; }

@@ -107,28 +107,46 @@ inline CoverageMask nearest_points_mask(const FootprintSquare& sq, float cx, flo
   // smallest keys are a set (the keys are distinct), so how they are selected does not change it.
   std::array<uint64_t, kPoints> key;
   constexpr uint64_t kInfinityKey = uint64_t(std::bit_cast<uint32_t>(std::numeric_limits<float>::infinity())) << 32;
+  // The distances first, one branch-free loop per kind (so that the compiler vectorizes the
+  // common one, the band), in the same operations for every point whichever loop runs.
+  std::array<float, kPoints> dist;
   const float step = 1.0f / kMaskSide;
-  for (int j = 0; j < kMaskSide; ++j)
-    for (int i = 0; i < kMaskSide; ++i) {
-      float u = (float(i) + 0.5f) * step - 0.5f, v = (float(j) + 0.5f) * step - 0.5f;
-      float px = u * sq.ax_x + v * sq.ay_x - cx, py = u * sq.ax_y + v * sq.ay_y - cy;
-      int b = j * kMaskSide + i;
-      float d;
-      if (sweep) {
+  for (int j = 0; j < kMaskSide; ++j) {
+    const float v = (float(j) + 0.5f) * step - 0.5f;
+    const float row_x = v * sq.ay_x, row_y = v * sq.ay_y;
+    float* d = dist.data() + j * kMaskSide;
+    if (sweep) {
+      for (int i = 0; i < kMaskSide; ++i) {
+        const float u = (float(i) + 0.5f) * step - 0.5f;
+        const float px = u * sq.ax_x + row_x - cx, py = u * sq.ax_y + row_y - cy;
         const float t = mask_point_time(j * kMaskSide + i);
         const float span = sweep->t1 - sweep->t0;
         if (t < sweep->t0 || (t >= sweep->t1 && !sweep->to_close) || !(span > 0.0f)) {
-          d = std::numeric_limits<float>::infinity();
+          d[i] = std::numeric_limits<float>::infinity();
         } else {
           const float offset = sweep->d0 + (sweep->d1 - sweep->d0) * ((t - sweep->t0) / span);
-          d = std::abs(px * nx + py * ny - offset);
+          d[i] = std::abs(px * nx + py * ny - offset);
         }
-      } else {
-        d = point ? px * px + py * py : std::abs(px * nx + py * ny);
       }
-      if (!((allowed >> b) & 1) || !(d <= std::numeric_limits<float>::max())) d = std::numeric_limits<float>::infinity();
-      key[b] = (uint64_t(std::bit_cast<uint32_t>(d)) << 32) | uint64_t(b);
+    } else if (point) {
+      for (int i = 0; i < kMaskSide; ++i) {
+        const float u = (float(i) + 0.5f) * step - 0.5f;
+        const float px = u * sq.ax_x + row_x - cx, py = u * sq.ax_y + row_y - cy;
+        d[i] = px * px + py * py;
+      }
+    } else {
+      for (int i = 0; i < kMaskSide; ++i) {
+        const float u = (float(i) + 0.5f) * step - 0.5f;
+        const float px = u * sq.ax_x + row_x - cx, py = u * sq.ax_y + row_y - cy;
+        d[i] = std::abs(px * nx + py * ny);
+      }
     }
+  }
+  for (int b = 0; b < kPoints; ++b) {
+    float d = dist[size_t(b)];
+    if (!((allowed >> b) & 1) || !(d <= std::numeric_limits<float>::max())) d = std::numeric_limits<float>::infinity();
+    key[size_t(b)] = (uint64_t(std::bit_cast<uint32_t>(d)) << 32) | uint64_t(b);
+  }
   CoverageMask m = 0;
   if (count <= kSmallSelection) {
     // Thin strands want a few points: keep the best `count` in order, most keys rejected by one

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -90,6 +91,63 @@ TEST(AreaLightRender, TheSameImageForAnyThreadCount) {
     hi = std::max(hi, one.at(x, kSize / 2, 0));
   }
   EXPECT_GT(hi, lo);
+}
+
+// A mat of thin strands (400, 0.012 wide, random directions) half a unit over a matte floor,
+// under a rect light 1.5 wide at height 3, seen from above: the floor is in the strands' soft
+// shadows. With `samples` light samples per shading point.
+std::string hair_mat_scene(int samples) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "Format 40 40 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\nProjection \"perspective\" \"fov\" [30]\n"
+    << "Translate 0 0 6\nRotate -90 1 0 0\nWorldBegin\nTransformBegin\nTranslate 0 3 0\nRotate 90 1 0 0\n"
+    << "Scale 1.5 1.5 1.5\nLightSource \"rectlight\" 1 \"intensity\" [4] \"int nsamples\" [" << samples
+    << "] \"string shadowname\" [\"raytrace\"]\nTransformEnd\nSurface \"matte\" \"Kd\" [1]\n"
+    << "Polygon \"P\" [-3 0 -3  3 0 -3  3 0 3  -3 0 3]\nCurves \"linear\" [";
+  constexpr int kStrands = 400;
+  for (int i = 0; i < kStrands; ++i) s << "2 ";
+  s << "] \"nonperiodic\" \"P\" [";
+  uint32_t state = 7;
+  auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return double(state >> 8) / double(1 << 24);
+  };
+  for (int i = 0; i < kStrands; ++i) {
+    const double x = 3 * next() - 1.5, z = 3 * next() - 1.5, a = 3.14159 * next(), l = 0.5 + 0.7 * next();
+    const double y = 0.4 + 0.4 * next(), dx = std::cos(a) * l / 2, dz = std::sin(a) * l / 2;
+    s << x - dx << " " << y << " " << z - dz << "  " << x + dx << " " << y << " " << z + dz << "  ";
+  }
+  s << "] \"constantwidth\" [0.012]\nWorldEnd\n";
+  return s.str();
+}
+
+double rms_difference(const Image& a, const Image& b) {
+  double sum = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x)
+      for (int c = 0; c < 3; ++c) sum += std::pow(double(a.at(x, y, c)) - double(b.at(x, y, c)), 2);
+  return std::sqrt(sum / (3.0 * a.width * a.height));
+}
+
+// The distance hider's cone shadow ray toward a light with extent (issue 19, item 3): one shadow
+// ray per shading point whose footprint grows from the receiving patch to the light, its
+// transmittance the A-buffer's over that cone. Against the same hider with 256 point-sampled
+// shadow rays per shading point (the unoccluded light sampled alike), the soft shadows of a mat
+// of strands come out closer than with 4 point-sampled rays, from one shadow ray per shading
+// point. Measured: RMSE 0.0069 for the cone, 0.0179 with 4 rays (40x40, one thread).
+TEST(AreaLightRender, OneConeShadowRayGivesTheSoftShadowOfStrands) {
+  RenderOptions sampled = test::single_thread(HiderKind::Distance);
+  sampled.distance.area_light_cones = false;
+  const Image reference = test::render_rib(hair_mat_scene(256), sampled).image;
+  const Image four = test::render_rib(hair_mat_scene(4), sampled).image;
+  const test::RenderedFrame cone = test::render_rib(hair_mat_scene(256), test::single_thread(HiderKind::Distance));
+  const double cone_error = rms_difference(cone.image, reference), four_error = rms_difference(four, reference);
+  std::printf("soft shadows of strands, RMSE against 256 point-sampled shadow rays: cone %.4f, 4 rays %.4f\n",
+              cone_error, four_error);
+  EXPECT_LT(cone_error, 0.6 * four_error) << "cone " << cone_error << ", 4 rays " << four_error;
+  const RayCounters& c = cone.stats.counters;
+  const uint64_t shadow_rays = c.traced_by_kind[int(SecondaryKind::Shadow)] + c.pruned_by_kind[int(SecondaryKind::Shadow)];
+  EXPECT_LT(shadow_rays, 4 * c.fragments) << "about one shadow ray per shaded fragment, not 256";
 }
 
 }  // namespace
