@@ -51,18 +51,76 @@ class FlatAreaLight : public Light {
   virtual Vec3f point(float u0, float u1) const = 0;
   virtual Vec3f centre() const = 0;
 
- private:
   Vec3f radiance_;
   int samples_;
   Vec3f normal_;
   float area_;
 };
 
+// Spherical rectangles (Urena, Fajardo, King, "An Area-Preserving Parametrization for Spherical
+// Rectangles", EGSR 2013): (u0, u1) in [0, 1)^2 onto the rectangle's points so that equal areas
+// of the square are equal solid angles seen from P. Sampled by area, a receiver close to a large
+// light gets samples whose solid angles differ by orders of magnitude (area cos / d^2); sampled
+// by solid angle each stands for the same, and only the receiver's cosine varies. Below this
+// solid angle (steradians) the light is sampled by area: the two agree there within rounding,
+// and S, a difference of angles near 2 pi, loses its digits (pbrt-v4 switches at 3e-4 for its
+// spherical triangles and rectangles).
+constexpr double kMinSphericalSolidAngle = 1e-3;
+// Edges farther from perpendicular than this (cosine) make a parallelogram (a sheared light), which
+// the parametrization does not cover: sampled by area.
+constexpr double kMaxEdgeCosine = 1e-4;
+
 class RectLight : public FlatAreaLight {
  public:
   RectLight(const Vec3f& radiance, int samples, const Vec3f& corner, const Vec3f& ex, const Vec3f& ey,
             const Vec3f& normal)
-      : FlatAreaLight(radiance, samples, normal, length(cross(ex, ey))), corner_(corner), ex_(ex), ey_(ey) {}
+      : FlatAreaLight(radiance, samples, normal, length(cross(ex, ey))),
+        corner_(corner),
+        ex_(ex),
+        ey_(ey) {}
+
+  bool sample(const Vec3f& P, float u0, float u1, LightContribution& out) const override {
+    const Vec3d o(P), s(corner_), exd(ex_), eyd(ey_);
+    const double lx = length(exd), ly = length(eyd);
+    if (!(lx > 0) || !(ly > 0) || std::abs(dot(exd, eyd)) > kMaxEdgeCosine * lx * ly)
+      return FlatAreaLight::sample(P, u0, u1, out);
+    // Only the lit side sees the light (the plane is seen from one side by all of it).
+    if (!(dot(Vec3d(normal_), o - (s + (exd + eyd) * 0.5)) > 0)) return false;
+    // The rectangle's frame: x, y along its edges, z toward P's side negative (z0 < 0).
+    const Vec3d x = exd / lx, y = eyd / ly;
+    Vec3d z = cross(x, y);
+    const Vec3d d = s - o;
+    double z0 = dot(d, z);
+    if (z0 > 0) z = -z, z0 = -z0;
+    const double x0 = dot(d, x), y0 = dot(d, y), x1 = x0 + lx, y1 = y0 + ly;
+    const Vec3d v00{x0, y0, z0}, v01{x0, y1, z0}, v10{x1, y0, z0}, v11{x1, y1, z0};
+    const Vec3d n0 = normalize(cross(v00, v10)), n1 = normalize(cross(v10, v11)), n2 = normalize(cross(v11, v01)),
+                n3 = normalize(cross(v01, v00));
+    auto angle = [](const Vec3d& a, const Vec3d& b) { return std::acos(std::clamp(-dot(a, b), -1.0, 1.0)); };
+    const double g0 = angle(n0, n1), g1 = angle(n1, n2), g2 = angle(n2, n3), g3 = angle(n3, n0);
+    const double b0 = n0.z, b1 = n2.z, k = 2 * std::numbers::pi - g2 - g3;
+    const double solid_angle = g0 + g1 - k;
+    if (!(solid_angle >= kMinSphericalSolidAngle) || !std::isfinite(solid_angle))
+      return FlatAreaLight::sample(P, u0, u1, out);
+    // u0 picks the solid angle to the left of a plane through P and the line x = xu; u1 the
+    // height along that line, uniform in the sine of its elevation.
+    const double au = double(u0) * solid_angle + k;
+    const double fu = (std::cos(au) * b0 - b1) / std::sin(au);
+    double cu = std::copysign(1.0, fu) / std::sqrt(fu * fu + b0 * b0);
+    cu = std::clamp(cu, -1.0, 1.0);
+    double xu = -(cu * z0) / std::max(std::sqrt(1 - cu * cu), 1e-300);
+    xu = std::clamp(std::isfinite(xu) ? xu : (cu > 0 ? x1 : x0), x0, x1);
+    const double dist_xz = std::sqrt(xu * xu + z0 * z0);
+    const double h0 = y0 / std::sqrt(dist_xz * dist_xz + y0 * y0), h1 = y1 / std::sqrt(dist_xz * dist_xz + y1 * y1);
+    const double hv = h0 + double(u1) * (h1 - h0), hv2 = hv * hv;
+    const double yv = hv2 < 1 - 1e-12 ? std::clamp(hv * dist_xz / std::sqrt(1 - hv2), y0, y1) : y1;
+    const Vec3d to_point = x * xu + y * yv + z * z0;
+    const double dist = length(to_point);
+    if (!(dist > 0) || !std::isfinite(dist)) return FlatAreaLight::sample(P, u0, u1, out);
+    // Each sample stands for the same solid angle.
+    out = {radiance_ * float(solid_angle / std::numbers::pi), Vec3f(to_point / dist), false, float(dist)};
+    return true;
+  }
 
  protected:
   Vec3f point(float u0, float u1) const override { return corner_ + ex_ * u0 + ey_ * u1; }

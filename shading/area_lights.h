@@ -11,8 +11,10 @@
 // - "spherelight" (PxrSphereLight): the sphere of diameter 1 (its radius is that of the sphere
 //   of the same volume under a non-uniform scale), emitting everywhere.
 // The dome, which has no shape, is shading/dome_light.h.
-// Sampling: the rectangle and the disc by area (the disc through the concentric map, so that
-// strata stay compact), the sphere by the cone it subtends (uniform in solid angle).
+// Sampling: the rectangle by solid angle (spherical rectangles, Urena et al. 2013; by area when
+// it is sheared into a parallelogram or subtends under 1e-3 sr), the disc by area (through the
+// concentric map, so that strata stay compact), the sphere by the cone it subtends (uniform in
+// solid angle).
 #pragma once
 
 #include "core/math/matrix.h"
