@@ -134,7 +134,8 @@ double rms_difference(const Image& a, const Image& b) {
 // transmittance the A-buffer's over that cone. Against the same hider with 256 point-sampled
 // shadow rays per shading point (the unoccluded light sampled alike), the soft shadows of a mat
 // of strands come out closer than with 4 point-sampled rays, from one shadow ray per shading
-// point. Measured: RMSE 0.0069 for the cone, 0.0129 with 4 rays (40x40, one thread; 0.0179 before the rect light was sampled by solid angle).
+// point. Measured: RMSE 0.0069 for the cone, 0.0129 with 4 rays (40x40, one thread; 4 rays gave
+// 0.0179 before the rect light was sampled by solid angle).
 TEST(AreaLightRender, OneConeShadowRayGivesTheSoftShadowOfStrands) {
   RenderOptions sampled = test::single_thread(HiderKind::Distance);
   sampled.distance.area_light_cones = false;
