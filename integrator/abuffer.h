@@ -119,8 +119,10 @@ class ABuffer {
   template <class Shade>
   size_t composite_until(float t_final, Shade&& shade) {
     sort_pending();
+    // Front to back: the first fragment that is not final stops the run (what lies behind it
+    // waits for it).
     size_t n = 0;
-    while (n < pending_.size() && pending_[n].t <= t_final) ++n;
+    while (n < pending_.size() && final_at(pending_[n], t_final)) ++n;
     for (size_t first = 0; first < n;) {
       size_t last = first + 1;
       const float equal_depth = pending_[first].t + kEqualDepthFraction * std::abs(pending_[first].t);
@@ -138,7 +140,7 @@ class ABuffer {
   }
 
   // For rays that want transmittance only (shadow rays): composites every pending fragment now,
-  // in whatever order, but the pieces of surface layers not yet final (t > t_final: more pieces
+  // in whatever order, but the pieces of surface layers not yet final (final_at: more pieces
   // of their mesh may still come and must be summed with them first). Transmittance is a product
   // over the fragments per footprint point, so depth order does not change it, and a ray through
   // dense hair learns at once that it is blocked, instead of when the walk has passed the
@@ -150,7 +152,7 @@ class ABuffer {
     size_t kept = 0, n = 0;
     for (size_t i = 0; i < pending_.size(); ++i) {
       Fragment& f = pending_[i];
-      if (f.layer != kNoLayer && f.t > t_final) {
+      if (f.layer != kNoLayer && !final_at(f, t_final)) {
         if (kept != i) pending_[kept] = f;
         ++kept;
         continue;
@@ -217,6 +219,20 @@ class ABuffer {
   size_t fragments_merged() const { return merges_; }  // because the list was full
 
  private:
+  // Whether f can be composited once the walk has visited everything within the footprint
+  // nearer than t_final: it lies there, and when it holds pieces of a surface layer, no piece
+  // still to come can join it (same_piece_group: a piece whose depths start within the slack
+  // of f's farthest). Holding a layer only until t_final passed its sort depth f.t let a
+  // neighbouring piece that shares an edge with it, met later, be composited alone: the order
+  // the walk met pieces in changed the image.
+  static bool final_at(const Fragment& f, float t_final) {
+    if (!(f.t <= t_final)) return false;
+    if (f.layer == kNoLayer || t_final == std::numeric_limits<float>::infinity()) return true;
+    // Pieces swept over the shutter keep the sort depth: held to their far depth, the front and
+    // back of a moving sphere became one layer, 24 % over its area (MovingAndDeformingQuadrics).
+    if (f.time >= 0) return true;
+    return f.t_far + 2.0f * kLayerDepthSlack * std::abs(f.t_far) < t_final;
+  }
   // Depth order, ties by strand: coplanar fragments composite in the same order on every run.
   static bool nearer(const Fragment& a, const Fragment& b) { return a.t < b.t || (a.t == b.t && a.strand < b.strand); }
   void sort_pending() { std::sort(pending_.begin(), pending_.end(), nearer); }
@@ -227,6 +243,12 @@ class ABuffer {
     if (p.preshaded) return false;
     if (f.strand != kNoStrand) return p.strand == f.strand;
     if (p.layer != f.layer) return false;
+    // Pieces of one sheet side by side share no mask point (their shared edges give each point
+    // to one of them); pieces over each other (a fold at the silhouette, a lid over its pot,
+    // the far side of a closed mesh) do, and stay apart, composited in depth order. Not so for
+    // pieces swept over the shutter (time >= 0): their masks are where they pass, and neighbours
+    // pass over the same points.
+    if (p.time < 0 && f.time < 0 && (p.mask & f.mask) != 0) return false;
     const float slack = kLayerDepthSlack * std::max({std::abs(p.t_far), std::abs(f.t_far), 1e-30f});
     return f.t_near <= p.t_far + slack && p.t_near <= f.t_far + slack;
   }

@@ -26,8 +26,12 @@ struct ShadingSite {
   DepthPlane plane{};        // of its largest piece
 };
 inline constexpr int kMaxShadingSites = 4;
-// Pieces whose normals are closer than this (cosine, about 18 degrees) share a shading site.
-inline constexpr float kSiteNormalCos = 0.95f;
+// Pieces whose normals are closer than this (cosine, about 5.7 degrees) share a shading site.
+// A layer that covers a pixel is otherwise shaded at one point: on the Aqsis vase's metal teapot
+// a highlight crosses a pixel within 18 degrees of normal (0.95 shaded it 0.66 against the
+// reference's 0.73); 0.995 took the vase's 1x1 RMSE from 0.0064 to 0.0055 and head-hair's from
+// 0.0042 to 0.0039, with fewer pieces walked than before layers were kept whole.
+inline constexpr float kSiteNormalCos = 0.995f;
 struct ShadingSites {
   std::array<ShadingSite, kMaxShadingSites> site;
   int count = 0;

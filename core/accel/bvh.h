@@ -155,7 +155,7 @@ uint64_t Bvh::footprint_walk(Ray& ray, const RayFootprint& footprint, BvhScratch
   const float dd = dot(ray.d, ray.d);
   if (!(dd > 0.0f) || !std::isfinite(dd)) return 0;
   const Slab4Ray sr(ray);
-  const ReachBound reach = footprint.reach_bound();
+  const ReachBound reach = footprint.walk_reach_bound();
   // The reach over a child's interval of the ray (nothing before t = 0 is within it).
   auto reach_over = [&](float t0, float t1) { return reach.max_over(std::max(0.0f, t0), std::max(0.0f, t1)); };
   std::vector<BvhQueueEntry>& queue = scratch.queue;

@@ -59,7 +59,7 @@ uint64_t traverse_with_footprint(const UniformGrid& grid, const Ray& ray, const 
     Vec3d corner{(c & 1) ? gb.hi.x : gb.lo.x, (c & 2) ? gb.hi.y : gb.lo.y, (c & 4) ? gb.hi.z : gb.lo.z};
     far_t = std::max(far_t, length(corner - o) / dlen);
   }
-  const ReachBound bound = footprint.reach_bound();
+  const ReachBound bound = footprint.walk_reach_bound();
   float max_reach = bound.max_over(std::max(0.0f, ray.tmin), float(std::min(far_t, double(ray.tmax))));
   float t0, t1;
   if (!gb.expanded(max_reach).intersect(ray, t0, t1)) return 0;

@@ -85,6 +85,18 @@ struct RayFootprint {
     const float a = 0.5f * (length(dox + ddx * t_apex) + length(doy + ddy * t_apex));
     return {a, spread, t_apex};
   }
+  // The reach an acceleration walk needs: the footprint's corners, 0.5 max(|X + Y|, |X - Y|) for
+  // its axes X and Y (reach_bound's 0.5 (|X| + |Y|) is up to 1.41 times that: a box grown by it
+  // let in a quarter more pieces of a mesh), and min_radius, the smallest radius the curve and
+  // point kernels give a footprint's coverage; never more than reach_bound, so that a walk
+  // never visits what reach_bound would have left out.
+  ReachBound walk_reach_bound() const {
+    const ReachBound loose = reach_bound();
+    const Vec3f x0 = dox + ddx * loose.apex_t, y0 = doy + ddy * loose.apex_t;
+    const float a = 0.5f * std::max(length(x0 + y0), length(x0 - y0));
+    const float b = 0.5f * std::max(length(ddx + ddy), length(ddx - ddy));
+    return {std::min(loose.a, std::max(a, min_radius)), std::min(loose.b, b), loose.apex_t};
+  }
   // The half-space every sub-ray of the ray (origin o, direction d) stays in for t >= 0, when
   // there is one: the sub-rays start on the plane through o spanned by dox and doy, and when
   // every sub-ray direction d + u ddx + v ddy (|u|, |v| <= 1/2) leaves that plane to the same

@@ -25,12 +25,14 @@ inline double box_distance(const BBox& b, const Vec3d& p) {
   return length(p - q);
 }
 
-// The smallest scanned t at which the box is within the footprint reach of the ray, or -1.
+// The smallest scanned t at which the box is within the footprint reach of the ray (the reach an
+// acceleration walk uses, RayFootprint::walk_reach_bound), or -1.
 inline double first_t_within_reach(const BBox& b, const Ray& ray, const RayFootprint& fp) {
   for (int i = 0; i <= kScanSteps; ++i) {
     double t = double(ray.tmin) + (kScanLength - ray.tmin) * i / kScanSteps;
     if (t > ray.tmax) break;
-    if (box_distance(b, Vec3d(ray.o) + Vec3d(ray.d) * t) <= fp.reach(float(t)) - kReachMargin) return t;
+    if (box_distance(b, Vec3d(ray.o) + Vec3d(ray.d) * t) <= fp.walk_reach_bound().at(float(t)) - kReachMargin)
+      return t;
   }
   return -1;
 }

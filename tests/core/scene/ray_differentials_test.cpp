@@ -127,5 +127,33 @@ TEST(RayDifferentials, TheReachBoundHoldsTheTrueReachOfAnyFootprint) {
   EXPECT_FLOAT_EQ(camera.reach(10), 0.5f * (0.01f + 0.02f) * 10);
 }
 
+// The walk's reach: no footprint corner (sub-ray u, v = +-1/2) is farther from the ray at any t,
+// it never exceeds reach_bound, and for a square pixel it is the half-diagonal, 1/sqrt 2 of
+// reach_bound's half-sum.
+TEST(RayDifferentials, TheWalkReachHoldsEveryCornerOfTheFootprint) {
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<float> c(-1, 1);
+  auto vec = [&] { return Vec3f{c(rng), c(rng), c(rng)}; };
+  for (int i = 0; i < 2000; ++i) {
+    RayFootprint f;
+    f.dox = vec() * 0.1f;
+    f.doy = vec() * 0.1f;
+    f.ddx = vec() * 0.01f;
+    f.ddy = vec() * 0.01f;
+    if (i % 3 == 1) f.form = FootprintForm::Pencil, f.apex_t = 5.0f * (c(rng) + 1);
+    const ReachBound walk = f.walk_reach_bound(), loose = f.reach_bound();
+    for (float t : {0.0f, 0.5f, 3.0f, 10.0f, 40.0f}) {
+      for (float u : {-0.5f, 0.5f})
+        for (float v : {-0.5f, 0.5f}) {
+          const float corner = length(f.axis_x(t) * u + f.axis_y(t) * v);
+          EXPECT_GE(walk.at(t) * (1 + 1e-5f) + 1e-7f, corner) << i << " at " << t;
+        }
+      EXPECT_LE(walk.at(t), loose.at(t) * (1 + 1e-6f)) << i << " at " << t;
+    }
+  }
+  RayFootprint camera = pencil_footprint({}, {}, {0.01f, 0, 0}, {0, 0.01f, 0}, 0, 0);
+  EXPECT_NEAR(camera.walk_reach_bound().at(10), std::sqrt(0.5f) * camera.reach(10), 1e-7f);
+}
+
 }  // namespace
 }  // namespace darc
