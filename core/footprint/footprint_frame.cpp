@@ -37,11 +37,46 @@ bool FootprintFrame::make(const Ray& ray, const RayFootprint& footprint, Footpri
       return false;
     }
     for (int b = 0; b < kMaskSide * kMaskSide; ++b) out.point[size_t(b)] = out.direction(mask_point_u(b), mask_point_v(b));
+    // Plane k through the apex and the sub-rays of one edge of the square; the inside is where
+    // the centre sub-ray runs (after the apex for side +1, before it for side -1).
+    const Vec3d inside = out.d * double(out.side);
+    const Vec3d edge_dir[4] = {out.d - out.ddx * 0.5, out.d + out.ddx * 0.5, out.d - out.ddy * 0.5, out.d + out.ddy * 0.5};
+    const Vec3d along[4] = {out.ddy, out.ddy, out.ddx, out.ddx};
+    for (int k = 0; k < 4; ++k) {
+      Vec3d n = cross(edge_dir[k], along[k]);
+      if (dot(n, inside) < 0) n = -n;
+      out.side_normal[size_t(k)] = n;
+      out.side_point[size_t(k)] = out.apex;
+    }
   } else {
     if (!(out.ddx == Vec3d{}) || !(out.ddy == Vec3d{})) return false;
     for (int b = 0; b < kMaskSide * kMaskSide; ++b) out.point[size_t(b)] = out.origin(mask_point_u(b), mask_point_v(b));
+    // Plane k through one edge of the square of origins, along d; the inside holds the centre.
+    const Vec3d edge_point[4] = {out.o - out.dox * 0.5, out.o + out.dox * 0.5, out.o - out.doy * 0.5, out.o + out.doy * 0.5};
+    const Vec3d along[4] = {out.doy, out.doy, out.dox, out.dox};
+    for (int k = 0; k < 4; ++k) {
+      Vec3d n = cross(out.d, along[k]);
+      if (dot(n, out.o - edge_point[k]) < 0) n = -n;
+      out.side_normal[size_t(k)] = n;
+      out.side_point[size_t(k)] = edge_point[k];
+    }
   }
   return true;
+}
+
+bool FootprintFrame::outside_a_side(std::span<const Vec3f> corners) const {
+  for (int k = 0; k < 4; ++k) {
+    const Vec3d& n = side_normal[size_t(k)];
+    const Vec3d& p = side_point[size_t(k)];
+    bool all_outside = true;
+    for (const Vec3f& c : corners)
+      if (!(dot(n, Vec3d(c) - p) < 0)) {
+        all_outside = false;
+        break;
+      }
+    if (all_outside && !corners.empty()) return true;
+  }
+  return false;
 }
 
 }  // namespace darc

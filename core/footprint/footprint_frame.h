@@ -13,6 +13,7 @@
 #include "core/math/vec.h"
 
 #include <array>
+#include <span>
 
 namespace darc {
 
@@ -34,6 +35,12 @@ struct FootprintFrame {
   double t_min = 0, t_max = 0;
   // Pencil: each mask point's direction D(u, v); parallel: its origin O(u, v).
   std::array<Vec3d, kMaskSide * kMaskSide> point;
+  // The four side planes of the volume the sub-rays sweep (u = -1/2, +1/2, v = -1/2, +1/2): a
+  // point X is on the footprint's side of plane k when dot(side_normal[k], X - side_point[k])
+  // >= 0. A convex piece with every corner strictly outside one of them covers nothing: the
+  // cheapest rejection of the pieces a walk's box test lets in (a zero normal rejects nothing).
+  std::array<Vec3d, 4> side_normal{}, side_point{};
+  bool outside_a_side(std::span<const Vec3f> corners) const;
 
   // False for a General footprint, one without differentials, a non-finite ray, or a pencil
   // whose apex lies inside the ray's interval.

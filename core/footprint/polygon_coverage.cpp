@@ -115,6 +115,7 @@ bool square_outside(const HalfPlane& h) {
 bool polygon_coverage(const FootprintFrame& frame, std::span<const Vec3f> corners, PolygonFootprintHit& hit) {
   const int n = int(corners.size());
   if (n < 3 || n > kMaxPolygonCorners) return false;
+  if (frame.outside_a_side(corners)) return false;
   const Vec3d normal = newell_normal(corners);
   // Edge planes first (one per corner), then the depth limits.
   HalfPlane planes[kMaxPolygonCorners + 2];

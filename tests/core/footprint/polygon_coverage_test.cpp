@@ -236,5 +236,40 @@ TEST(PolygonCoverage, EdgeOnAndOutsideCoverNothing) {
   EXPECT_FALSE(polygon_coverage(fr, std::vector<Vec3f>{{0, 0, 1}, {0, 0, 1}, {1, 0, 1}}, h));
 }
 
+// The frame's side planes (the early rejection of pieces beside the footprint): every sub-ray
+// point of the square lies inside all four, for a camera pencil, a shadow pencil (before its
+// apex) and a parallel prism; a point just past an edge of the square lies outside that edge's
+// plane; a small triangle wholly past an edge is rejected, one straddling it is not.
+TEST(PolygonCoverage, SidePlanesHoldTheFootprintAndRejectWhatLiesBeside) {
+  const float distance = 10;
+  const Vec3f dpdx{0.2f, 0, 0}, dpdy{0, 0.2f, 0};
+  const Ray camera = camera_ray(normalize(Vec3f{0.1f, -0.2f, 1})), shadow{{0, 0, 0}, {0, 0, 1}, 1e-4f, distance};
+  const RayFootprint parallel{{0.1f, 0, 0}, {0, 0.1f, 0}, {}, {}, 0, FootprintForm::Parallel, 0};
+  const FootprintFrame frames[3] = {
+      frame_of(camera, camera_footprint(0.02f)),
+      frame_of(shadow, pencil_footprint(dpdx, dpdy, dpdx * (-1 / distance), dpdy * (-1 / distance), distance, 0)),
+      frame_of(camera_ray(), parallel)};
+  const double ts[3][3] = {{0.5, 2, 9}, {0.5, 5, 9.5}, {0.5, 2, 9}};
+  for (int f = 0; f < 3; ++f) {
+    const FootprintFrame& fr = frames[f];
+    auto at = [&](double u, double v, double t) { return fr.origin(u, v) + fr.direction(u, v) * t; };
+    for (double t : ts[f]) {
+      for (double u : {-0.49, 0.0, 0.49})
+        for (double v : {-0.49, 0.0, 0.49})
+          EXPECT_FALSE(fr.outside_a_side(std::vector<Vec3f>{Vec3f(at(u, v, t))})) << f << " " << u << " " << v;
+      for (int k = 0; k < 4; ++k) {
+        const double u = k == 0 ? -0.55 : k == 1 ? 0.55 : 0.0, v = k == 2 ? -0.55 : k == 3 ? 0.55 : 0.0;
+        EXPECT_TRUE(fr.outside_a_side(std::vector<Vec3f>{Vec3f(at(u, v, t))})) << f << " side " << k << " t " << t;
+        // A triangle past that edge, and one reaching back over it.
+        const double du = u * 0.2, dv = v * 0.2;
+        const std::vector<Vec3f> past{Vec3f(at(u, v, t)), Vec3f(at(u + du, v + dv, t)), Vec3f(at(u + dv, v + du, t))};
+        EXPECT_TRUE(fr.outside_a_side(past)) << f << " side " << k;
+        const std::vector<Vec3f> over{Vec3f(at(u, v, t)), Vec3f(at(0, 0, t)), Vec3f(at(u + dv, v + du, t))};
+        EXPECT_FALSE(fr.outside_a_side(over)) << f << " side " << k;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace darc
