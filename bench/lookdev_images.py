@@ -7,11 +7,15 @@ the markdown table that docs/lookdev.md holds, with each render's seconds.
 
 Usage: bench/lookdev_images.py [build/darc] > /tmp/lookdev-table.md
 
-Not yet in docs: on its first run (2026-12-07) the rect-light variant rendered dim (image mean
-0.047, its placement or facing to be checked) and the Chiang tuft under the shadowed dome nearly
-black, the floor lit, while Kajiya-Kay's tuft is lit: both hiders agree (tuft region mean 0.156
-distance, 0.154 stochastic 2x2; 0.87 without shadows), so it is the shading or the dome's
-shadowing of a dense tuft, to be understood before the images are published.
+Not yet in docs: on its first run (2026-12-07) the rect-light variant rendered evenly dim (image
+mean 0.047: its intensity is too low for this view) and the Chiang tuft under the shadowed dome
+nearly black, the floor lit, while Kajiya-Kay's tuft is lit. Both hiders agree (tuft region mean
+0.156 distance, 0.154 stochastic 2x2; 0.87 without shadows), and one strand of the same colour
+over a floor under the shadowed dome keeps 0.89 of its unshadowed light: the chain works, and
+the darkness is the dense tuft shadowing itself with single scattering only (Chiang's narrow
+lobes take their light from directions through the tuft; light scattered from strand to strand,
+which makes light hair bright, is not traced). To be settled (multiple scattering between
+strands, e.g. dual scattering, or a path-traced reference) before the images are published.
 """
 import gzip
 import os
