@@ -1,5 +1,6 @@
 #include "integrator/distance_hider.h"
 
+#include "integrator/depth_bands.h"
 #include "integrator/footprint_secondary_rays.h"
 
 #include "core/footprint/footprint_frame.h"
@@ -32,8 +33,6 @@ T bezier(const T* c, float u) {
   return c[0] * (s * s * s) + c[1] * (3 * s * s * u) + c[2] * (3 * s * u * u) + c[3] * (u * u * u);
 }
 
-// The differentials of the camera ray through raster (x, y) for a sample spacing of `spacing`
-// pixels: the rays one spacing to the right and one down.
 // A fragment of `primitive` at depth t (strand, u and distance for curves and points).
 Fragment fragment(float t, float coverage, uint32_t primitive, CoverageMask mask, uint32_t strand = kNoStrand,
                   float u = 0, float distance = 0) {
@@ -60,86 +59,6 @@ DepthPlane depth_plane(const Ray& ray, const RayFootprint& footprint, const Vec3
   p.dv = -(dot(n, footprint.doy) + p.t0 * dot(n, footprint.ddy)) / nd;
   p.valid = std::isfinite(p.t0) && std::isfinite(p.du) && std::isfinite(p.dv);
   return p;
-}
-
-// A surface that covers the whole footprint is one fragment at the depth of its centre, unless
-// its depth changes across the footprint by more than kDepthBandFraction of that depth: then
-// whatever stands on it (grass on the ground seen through a lens, where the footprint is the
-// circle of confusion) is in front of it in part of the footprint and behind it in the rest.
-// One depth would hide such a strand wholly or not at all (strands behind the centre's depth were
-// also culled: the defocused grass lost 0.3 % of its coverage to the ground); bands of mask points of about equal depth, each its own fragment, let
-// the A-buffer composite the strand in front of the farther bands and behind the nearer ones.
-// Depths over the footprint are bilinear through the four corner mask points' hits (a plane's
-// depth along the sub-rays is a ratio of linear functions: near enough over one footprint).
-constexpr float kDepthBandFraction = 0.01f;
-constexpr int kMaxDepthBands = 4;  // 2 did as well as 8 on the defocused grass
-
-struct DepthBand {
-  float t = 0, coverage = 0;
-  CoverageMask mask = 0;
-  int point = -1;  // the mask point nearest the band's centroid, shaded for it
-};
-struct DepthBands {
-  int count = 0;
-  float nearest = std::numeric_limits<float>::infinity();
-  std::array<DepthBand, kMaxDepthBands> band{};
-};
-
-// The bilinear depth at mask point b from the corner mask points' depths (SurfaceFragment).
-float depth_at_point(const SurfaceFragment& sf, int b) {
-  const float s = float(b % kMaskSide) / float(kMaskSide - 1), r = float(b / kMaskSide) / float(kMaskSide - 1);
-  const auto& c = sf.corner_t;
-  return (1 - r) * ((1 - s) * c[0] + s * c[1]) + r * ((1 - s) * c[2] + s * c[3]);
-}
-
-DepthBands depth_bands(const SurfaceFragment& sf) {
-  DepthBands out;
-  const auto [lo, hi] = std::minmax_element(sf.corner_t.begin(), sf.corner_t.end());
-  const float range = *hi - *lo, depth = std::abs(sf.t);
-  if (!(range > kDepthBandFraction * depth) || !std::isfinite(range)) return out;
-  const int count = std::min(kMaxDepthBands, int(std::ceil(range / (kDepthBandFraction * depth))));
-  std::array<float, kMaxDepthBands> sum_t{}, sum_u{}, sum_v{};
-  std::array<int, kMaxDepthBands> points{};
-  std::array<CoverageMask, kMaxDepthBands> masks{};
-  std::array<float, kMaskSide * kMaskSide> depth_of{};
-  std::array<int, kMaskSide * kMaskSide> band_of{};
-  for (int b = 0; b < kMaskSide * kMaskSide; ++b) {
-    const float t = depth_at_point(sf, b);
-    const int k = std::clamp(int((t - *lo) / range * float(count)), 0, count - 1);
-    depth_of[size_t(b)] = t;
-    band_of[size_t(b)] = k;
-    sum_t[size_t(k)] += t;
-    sum_u[size_t(k)] += float(b % kMaskSide);
-    sum_v[size_t(k)] += float(b / kMaskSide);
-    ++points[size_t(k)];
-    masks[size_t(k)] |= CoverageMask{1} << b;
-  }
-  for (int k = 0; k < count; ++k) {
-    const int n = points[size_t(k)];
-    if (n == 0) continue;
-    DepthBand& band = out.band[size_t(out.count++)];
-    band.t = sum_t[size_t(k)] / float(n);
-    band.coverage = float(n) / float(kMaskSide * kMaskSide);
-    band.mask = masks[size_t(k)];
-    const float cu = sum_u[size_t(k)] / float(n), cv = sum_v[size_t(k)] / float(n);
-    float best = std::numeric_limits<float>::infinity();
-    for (int b = 0; b < kMaskSide * kMaskSide; ++b) {
-      if (band_of[size_t(b)] != k) continue;
-      const float du = float(b % kMaskSide) - cu, dv = float(b / kMaskSide) - cv;
-      if (du * du + dv * dv < best) best = du * du + dv * dv, band.point = b;
-    }
-    out.nearest = std::min(out.nearest, band.t);
-  }
-  return out;
-}
-
-// The farthest depth of a surface that covers the whole footprint: its corner mask points'
-// depths carried out to the footprint's corners (half a cell farther from the centre).
-float farthest_depth(const SurfaceFragment& sf) {
-  float far = sf.t;
-  const float out_to_corner = float(kMaskSide) / float(kMaskSide - 1);
-  for (float t : sf.corner_t) far = std::max(far, sf.t + (t - sf.t) * out_to_corner);
-  return far;
 }
 
 // Widens a camera ray's footprint by its lens (DepthOfField): one ray per pixel stratum then

@@ -107,16 +107,22 @@ TEST(RayDifferentials, AShadowFootprintTowardADistantLightKeepsItsSize) {
 
 // The reach bound is exact for a camera pencil (today's formula), and for any footprint never
 // below the true reach, which is convex in t.
-TEST(RayDifferentials, TheReachBoundHoldsTheTrueReachOfAnyFootprint) {
-  std::mt19937 rng(5);
+// A general footprint with random origin and direction differentials.
+RayFootprint random_footprint(std::mt19937& rng) {
   std::uniform_real_distribution<float> c(-1, 1);
   auto vec = [&] { return Vec3f{c(rng), c(rng), c(rng)}; };
+  RayFootprint f;
+  f.dox = vec() * 0.1f;
+  f.doy = vec() * 0.1f;
+  f.ddx = vec() * 0.01f;
+  f.ddy = vec() * 0.01f;
+  return f;
+}
+
+TEST(RayDifferentials, TheReachBoundHoldsTheTrueReachOfAnyFootprint) {
+  std::mt19937 rng(5);
   for (int i = 0; i < 2000; ++i) {
-    RayFootprint f;
-    f.dox = vec() * 0.1f;
-    f.doy = vec() * 0.1f;
-    f.ddx = vec() * 0.01f;
-    f.ddy = vec() * 0.01f;
+    const RayFootprint f = random_footprint(rng);
     const ReachBound bound = f.reach_bound();
     for (float t : {0.0f, 0.5f, 3.0f, 10.0f, 40.0f}) {
       const float exact = 0.5f * (length(f.axis_x(t)) + length(f.axis_y(t)));
@@ -132,15 +138,10 @@ TEST(RayDifferentials, TheReachBoundHoldsTheTrueReachOfAnyFootprint) {
 // reach_bound's half-sum.
 TEST(RayDifferentials, TheWalkReachHoldsEveryCornerOfTheFootprint) {
   std::mt19937 rng(6);
-  std::uniform_real_distribution<float> c(-1, 1);
-  auto vec = [&] { return Vec3f{c(rng), c(rng), c(rng)}; };
+  std::uniform_real_distribution<float> apex(0, 10);
   for (int i = 0; i < 2000; ++i) {
-    RayFootprint f;
-    f.dox = vec() * 0.1f;
-    f.doy = vec() * 0.1f;
-    f.ddx = vec() * 0.01f;
-    f.ddy = vec() * 0.01f;
-    if (i % 3 == 1) f.form = FootprintForm::Pencil, f.apex_t = 5.0f * (c(rng) + 1);
+    RayFootprint f = random_footprint(rng);
+    if (i % 3 == 1) f.form = FootprintForm::Pencil, f.apex_t = apex(rng);
     const ReachBound walk = f.walk_reach_bound(), loose = f.reach_bound();
     for (float t : {0.0f, 0.5f, 3.0f, 10.0f, 40.0f}) {
       for (float u : {-0.5f, 0.5f})
