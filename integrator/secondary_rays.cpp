@@ -3,13 +3,18 @@
 #include "core/scene/ray_differentials.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <numbers>
 
 namespace darc {
 
 namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
 
 // The strata of an area light's samples: nx x ny cells (nx the rounded square root of the count
 // asked for), each sampled at its centre moved by the rotation, wrapped into [0, 1).
@@ -47,6 +52,22 @@ struct LightSampleRotation {
     return z ^ (z >> 31);
   }
 };
+
+// Four numbers for a shader's draw of sample k (SurfaceShader::sample_response): the stratum's
+// two (u0, u1) where a fibre's lobe is steered (its longitudinal and azimuthal angles), and two
+// drawn from the stratum's rotation and k (which lobe and entry point, the cone's turn).
+std::array<float, 4> lobe_numbers(const LightSampleRotation& r, int k, float u0, float u1) {
+  const uint64_t h = LightSampleRotation::mix((uint64_t(std::bit_cast<uint32_t>(r.u0)) << 32) ^
+                                              std::bit_cast<uint32_t>(r.u1) ^ (uint64_t(uint32_t(k)) << 16));
+  return {float(h >> 40) * 0x1.0p-24f, u0, float((h >> 16) & 0xFFFFFF) * 0x1.0p-24f, u1};
+}
+
+// Veach's power heuristic: the weight of a sample drawn with density `own` where another
+// technique, drawing as many samples, has density `other`.
+float power_weight(float own, float other) {
+  const float a = own * own, b = other * other;
+  return a + b > 0 && std::isfinite(a + b) ? a / (a + b) : (std::isfinite(a) && a > 0 ? 1.0f : 0.0f);
+}
 
 bool worth_tracing(float weight, const SecondaryRaySettings& s) {
   return s.contribution_threshold <= 0 || weight >= s.contribution_threshold;
@@ -129,11 +150,42 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
       // and the light (Cranley-Patterson): neighbouring points see different points of the light,
       // so the light's shape does not print as a pattern of copies, and the result depends on
       // nothing but the point (the same for any thread count or tile order).
-      const LightSampleGrid grid(n);
       const LightSampleRotation rotation(sp.P, light_index);
-      const float share = 1.0f / float(grid.count());
       // Surfaces respond in the hemisphere their faced-forward normal points to; strands all around.
       const Vec3f around = at.is_curve ? Vec3f{} : lobes.Nf;
+      if (light->surrounds() && shader.can_sample_response(sp)) {
+        // Multiple importance sampling (Veach 1997, the power heuristic): half the samples from
+        // the light (by the map's texels), half from the shader's lobes (a fibre's, a few degrees
+        // wide), each weighed by its density against the other technique's, so that neither a
+        // narrow lobe nor a small bright texel is left to chance. Under a constant dome the
+        // light's own draw is uniform and adds only noise: the lobes draw every sample (for a
+        // fibre without absorption each weighs exactly its radiance).
+        const bool light_draws = !light->has_constant_radiance();
+        const LightSampleGrid grid(light_draws ? (n + 1) / 2 : n);
+        const LightSampleRotation lobe_rotation(sp.P, light_index | 0x80000000u);
+        const float share = 1.0f / float(grid.count());
+        const float inf = std::numeric_limits<float>::infinity();
+        for (int k = 0; k < grid.count(); ++k) {
+          float u0, u1;
+          grid.point(k, rotation, u0, u1);
+          if (light_draws && light->sample(sp.P, around, u0, u1, lc)) {
+            float shader_pdf = 0;
+            const Vec3f whole = shader.response_and_pdf(sp, lobes, lc, shader_pdf);
+            const float w = power_weight(light->pdf(sp.P, around, lc.L), shader_pdf);
+            if (w > 0) add_shadowed(*light, whole, whole * (w * share), lc.L, lc.distance, 0.0f);
+          }
+          grid.point(k, lobe_rotation, u0, u1);
+          SurfaceShader::ResponseSample drawn;
+          if (!shader.sample_response(sp, lobes, lobe_numbers(lobe_rotation, k, u0, u1), drawn)) continue;
+          // Cl = L / (pi pdf), as the light's own samples carry it (shading/area_lights.h).
+          const Vec3f whole = mul(drawn.factor, light->environment(drawn.L)) * (1 / (kPi * drawn.pdf));
+          const float w = light_draws ? power_weight(drawn.pdf, light->pdf(sp.P, around, drawn.L)) : 1.0f;
+          if (w > 0) add_shadowed(*light, whole, whole * (w * share), drawn.L, inf, 0.0f);
+        }
+        continue;
+      }
+      const LightSampleGrid grid(n);
+      const float share = 1.0f / float(grid.count());
       // With a footprint, a light with extent casts one cone shadow ray: its samples light the
       // point as if unoccluded, and their sum is dimmed by the mean transmittance over the cone
       // from the receiving patch to the light (visibility taken as independent of where on the

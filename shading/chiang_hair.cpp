@@ -230,9 +230,14 @@ std::array<float, 4> lobe_pdf(const std::array<Vec3f, 4>& A) {
 }  // namespace
 
 HairSample ChiangHair::sample(const Vec3f& T, const Vec3f& wo, float h, const std::array<float, 4>& u) const {
-  const Frame f = frame(T, wo);
   h = std::clamp(h, -1.0f, 1.0f);
-  const WidthTerms w = width_terms(p_, p_.sigma_a, f.sin_o, f.cos_o, h, safe_sqrt(1 - h * h));
+  return sample_at(frame(T, wo), p_.sigma_a, h, safe_sqrt(1 - h * h), u);
+}
+
+HairSample ChiangHair::sample_at(const Frame& f, const Vec3f& sigma_a, float sin_g, float cos_g,
+                                 const std::array<float, 4>& u) const {
+  const Vec3f& T = f.T;
+  const WidthTerms w = width_terms(p_, sigma_a, f.sin_o, f.cos_o, sin_g, cos_g);
   const std::array<float, 4> lobe_p = lobe_pdf(w.A);
   HairSample out;
   int p = 0;
@@ -266,6 +271,49 @@ HairSample ChiangHair::sample(const Vec3f& T, const Vec3f& wo, float h, const st
   }
   if (!(out.pdf > 0) || !std::isfinite(out.pdf)) out.pdf = 0;
   return out;
+}
+
+HairSample ChiangHair::sample_across(const Vec3f& T, const Vec3f& wo, const Vec3f& sigma_a,
+                                     const std::array<float, 4>& u) const {
+  const Frame f = frame(T, wo);
+  // The entry point j with probability width_weight_[j]; u[0] rescaled to what is left of j's
+  // interval chooses the lobe.
+  size_t j = 0;
+  float below = 0;
+  for (; j + 1 < width_weight_.size() && u[0] >= below + width_weight_[j]; ++j) below += width_weight_[j];
+  std::array<float, 4> v = u;
+  v[0] = std::clamp((u[0] - below) / width_weight_[j], 0.0f, 0.99999994f);
+  HairSample out = sample_at(f, sigma_a, width_sin_[j], width_cos_[j], v);
+  const Across a = evaluate_across(f, out.wi, sigma_a);
+  out.S = a.S;
+  out.pdf = a.pdf > 0 && std::isfinite(a.pdf) ? a.pdf : 0.0f;
+  return out;
+}
+
+ChiangHair::Across ChiangHair::evaluate_across(const Vec3f& T, const Vec3f& wo, const Vec3f& wi,
+                                               const Vec3f& sigma_a) const {
+  return evaluate_across(frame(T, wo), wi, sigma_a);
+}
+
+ChiangHair::Across ChiangHair::evaluate_across(const Frame& f, const Vec3f& wi, const Vec3f& sigma_a) const {
+  const float sin_i = std::clamp(dot(wi, f.T), -1.0f, 1.0f), cos_i = safe_sqrt(1 - sin_i * sin_i);
+  const float phi = std::atan2(dot(wi, f.Z), dot(wi, f.Y));
+  const std::array<float, 4> M = longitudinal(f, sin_i, cos_i);
+  Across a;
+  for (size_t j = 0; j < width_sin_.size(); ++j) {
+    const WidthTerms w = width_terms(p_, sigma_a, f.sin_o, f.cos_o, width_sin_[j], width_cos_[j]);
+    const std::array<float, 4> lobe_p = lobe_pdf(w.A);
+    Vec3f Sj = w.A[3] * (M[3] / (2 * kPi));
+    float pdf_j = M[3] * lobe_p[3] / (2 * kPi);
+    for (int q = 0; q < 3; ++q) {
+      const float n = trimmed_logistic(wrap_angle(phi - w.phi(q)), s_);
+      Sj += w.A[size_t(q)] * (M[size_t(q)] * n);
+      pdf_j += M[size_t(q)] * lobe_p[size_t(q)] * n;
+    }
+    a.S += Sj * width_weight_[j];
+    a.pdf += pdf_j * width_weight_[j];
+  }
+  return a;
 }
 
 float ChiangHair::pdf(const Vec3f& T, const Vec3f& wo, const Vec3f& wi, float h) const {

@@ -58,6 +58,20 @@ class ChiangHair {
   // The density sample() draws wi with.
   float pdf(const Vec3f& T, const Vec3f& wo, const Vec3f& wi, float h) const;
 
+  // Importance sampling of scattering_across with absorption sigma_a: an entry point of the width
+  // quadrature drawn by its weight, then sample() there (u[0] chooses both: the point, then the
+  // lobe within what is left of its interval). The sample's S is scattering_across at wi and its
+  // pdf the density of the whole draw, pdf_across: so S / pdf estimates what the fibre sends
+  // without bias, and the two can be weighed against another technique (MIS).
+  HairSample sample_across(const Vec3f& T, const Vec3f& wo, const Vec3f& sigma_a, const std::array<float, 4>& u) const;
+  // scattering_across and the density sample_across draws wi with (the quadrature's mean of the
+  // entry points' densities), in one pass over the width.
+  struct Across {
+    Vec3f S;
+    float pdf = 0;
+  };
+  Across evaluate_across(const Vec3f& T, const Vec3f& wo, const Vec3f& wi, const Vec3f& sigma_a) const;
+
   // The attenuation of each lobe (A_0 .. A_2, and A_3 for every longer path) at h for a
   // direction wo at sin(theta_o) = sin_theta_o along the fibre. Without absorption they sum to 1.
   std::array<Vec3f, 4> attenuation(float sin_theta_o, float h) const;
@@ -80,6 +94,9 @@ class ChiangHair {
  private:
   struct Frame;
   Frame frame(const Vec3f& T, const Vec3f& wo) const;
+  // sample() at the entry point of sine sin_g (cosine cos_g), absorption sigma_a.
+  HairSample sample_at(const Frame& f, const Vec3f& sigma_a, float sin_g, float cos_g, const std::array<float, 4>& u) const;
+  Across evaluate_across(const Frame& f, const Vec3f& wi, const Vec3f& sigma_a) const;
   // The longitudinal lobes M_p(theta_i) of the four lobes.
   std::array<float, 4> longitudinal(const Frame& f, float sin_theta_i, float cos_theta_i) const;
 

@@ -48,6 +48,13 @@ class DomeLight : public Light {
     out = {radiance_ * (1 / cos_t), L, false, inf};
     return true;
   }
+  bool surrounds() const override { return true; }
+  bool has_constant_radiance() const override { return !map_; }
+  float pdf(const Vec3f&, const Vec3f& N, const Vec3f& L) const override {
+    if (map_) return map_->pdf(unit(to_dome_.transform_vector(Vec3d(L))));
+    if (length_squared(N) == 0.0f) return 1 / (4 * kPi);
+    return std::max(0.0f, dot(N, L)) / kPi;
+  }
   Vec3f environment(const Vec3f& d) const override {
     if (!map_) return radiance_;
     return mul(radiance_, map_->radiance(unit(to_dome_.transform_vector(Vec3d(d)))));

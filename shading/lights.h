@@ -51,6 +51,15 @@ class Light {
   // The radiance a ray leaving the scene along unit direction d receives from this light (a
   // dome's, at infinity); black for lights that are not at infinity all around.
   virtual Vec3f environment(const Vec3f& /*d*/) const { return {}; }
+  // A light at infinity all around (the dome): every direction sees it, with radiance
+  // environment(d), so directions a shader draws can light too (multiple importance sampling).
+  virtual bool surrounds() const { return false; }
+  // The same radiance along every direction (a dome without a map): drawing directions by the
+  // light then does no better than uniformly, and a shader that can draw by its response should
+  // draw them all.
+  virtual bool has_constant_radiance() const { return false; }
+  // The density per steradian that sample(P, N, ...) draws the unit direction L with.
+  virtual float pdf(const Vec3f& /*P*/, const Vec3f& /*N*/, const Vec3f& /*L*/) const { return 0.0f; }
   // A light at infinity seen as a small disc (a sun): the half-angle of the cone it subtends, in
   // radians (0: none). A tracer with footprints may trace one shadow ray whose footprint widens
   // with that cone instead of samples() rays (SecondaryRayTracer::cone_shadow_transmittance).

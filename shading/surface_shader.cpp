@@ -209,15 +209,36 @@ class ChiangHairSurface : public SurfaceShader {
   Vec3f response(const ShadingPoint& sp, const SurfaceLobes& l, const LightContribution& lc) const override {
     const Vec3f T = normalize(sp.dPdv);
     if (length_squared(T) == 0.0f) return surface_fallback_.response(sp, l, lc);
-    const Vec3f sigma_a = absorption_given_ ? hair_.params().sigma_a
-                                            : ChiangHair::sigma_a_from_reflectance(sp.Cs, hair_.params().beta_n);
-    const Vec3f S = hair_.scattering_across(T, -sp.I, lc.L, sigma_a);
+    const Vec3f S = hair_.scattering_across(T, -sp.I, lc.L, sigma_a_at(sp));
     return mul(S, lc.Cl) * std::numbers::pi_v<float>;
+  }
+  // The fibre's lobes drawn across its width (ChiangHair::sample_across): under a dome they are a
+  // few degrees wide where the dome's own samples cover the whole sphere.
+  bool can_sample_response(const ShadingPoint& sp) const override { return length_squared(sp.dPdv) > 0.0f; }
+  bool sample_response(const ShadingPoint& sp, const SurfaceLobes&, const std::array<float, 4>& u,
+                       ResponseSample& out) const override {
+    const Vec3f T = normalize(sp.dPdv);
+    if (length_squared(T) == 0.0f) return false;
+    const HairSample s = hair_.sample_across(T, -sp.I, sigma_a_at(sp), u);
+    if (!(s.pdf > 0)) return false;
+    out = {s.wi, s.S * std::numbers::pi_v<float>, s.pdf};
+    return true;
+  }
+  Vec3f response_and_pdf(const ShadingPoint& sp, const SurfaceLobes& l, const LightContribution& lc,
+                         float& pdf) const override {
+    const Vec3f T = normalize(sp.dPdv);
+    if (length_squared(T) == 0.0f) return SurfaceShader::response_and_pdf(sp, l, lc, pdf);
+    const ChiangHair::Across a = hair_.evaluate_across(T, -sp.I, lc.L, sigma_a_at(sp));
+    pdf = a.pdf;
+    return mul(a.S, lc.Cl) * std::numbers::pi_v<float>;
   }
 
  private:
   static Vec3f clamp01(const Vec3f& c) {
     return {std::clamp(c.x, 0.0f, 1.0f), std::clamp(c.y, 0.0f, 1.0f), std::clamp(c.z, 0.0f, 1.0f)};
+  }
+  Vec3f sigma_a_at(const ShadingPoint& sp) const {
+    return absorption_given_ ? hair_.params().sigma_a : ChiangHair::sigma_a_from_reflectance(sp.Cs, hair_.params().beta_n);
   }
   ChiangHair hair_;
   bool absorption_given_;

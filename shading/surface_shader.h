@@ -12,6 +12,7 @@
 #include "shading/shading_point.h"
 #include "shading/textures.h"
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,30 @@ class SurfaceShader {
   // The light sent toward the eye for one non-ambient light's contribution `lc` (its Cl already
   // attenuated by the light itself, not yet by occluders), before Oi. `lobes` is lobes(sp).
   virtual Vec3f response(const ShadingPoint&, const SurfaceLobes&, const LightContribution&) const { return {}; }
+
+  // Directions drawn where the response is large, for a light that can be seen along any
+  // direction (the dome: its samples and these are weighed by multiple importance sampling in
+  // integrator/secondary_rays.cpp). Shaders that cannot draw (the default) leave the light to
+  // sample alone. The response to light Cl arriving along L is mul(factor, Cl) (every shader here
+  // is linear in Cl); pdf is per steradian.
+  struct ResponseSample {
+    Vec3f L;
+    Vec3f factor;
+    float pdf = 0;
+  };
+  virtual bool can_sample_response(const ShadingPoint&) const { return false; }
+  // `u`: four uniform numbers in [0, 1). False: no direction (the draw failed).
+  virtual bool sample_response(const ShadingPoint&, const SurfaceLobes&, const std::array<float, 4>& /*u*/,
+                               ResponseSample&) const {
+    return false;
+  }
+  // response(lc), and in `pdf` the density sample_response draws lc.L with (0 for shaders that
+  // cannot draw), in one evaluation.
+  virtual Vec3f response_and_pdf(const ShadingPoint& sp, const SurfaceLobes& l, const LightContribution& lc,
+                                 float& pdf) const {
+    pdf = 0;
+    return response(sp, l, lc);
+  }
 };
 
 // The lights a primitive sees (pointers into the scene's light list).
