@@ -7,15 +7,11 @@ the markdown table that docs/lookdev.md holds, with each render's seconds.
 
 Usage: bench/lookdev_images.py [build/darc] > /tmp/lookdev-table.md
 
-Not yet in docs: on its first run (2026-12-07) the rect-light variant rendered evenly dim (image
-mean 0.047: its intensity is too low for this view) and the Chiang tuft under the shadowed dome
-nearly black, the floor lit, while Kajiya-Kay's tuft is lit. Both hiders agree (tuft region mean
-0.156 distance, 0.154 stochastic 2x2; 0.87 without shadows), and one strand of the same colour
-over a floor under the shadowed dome keeps 0.89 of its unshadowed light: the chain works, and
-the darkness is the dense tuft shadowing itself with single scattering only (Chiang's narrow
-lobes take their light from directions through the tuft; light scattered from strand to strand,
-which makes light hair bright, is not traced). To be settled (multiple scattering between
-strands, e.g. dual scattering, or a path-traced reference) before the images are published.
+The images and what they show are in docs/lookdev.md ("The demo tuft under three lights"): the
+Chiang tuft is dark under the overhead rect light and the dome over the floor because a fibre sends
+light back along the specular cone of its tangent (theta_i = -theta_o): a camera looking down at
+near-vertical strands sees what comes from below the horizon, which the floor blocks, and neither
+light bounced off the floor nor light scattered from strand to strand is traced.
 """
 import gzip
 import os
@@ -37,15 +33,16 @@ SPOTS = (
     'LightSource "shadowspot" 3 "intensity" [30] "from" [1 3 -4] "to" [0.4 0.2 -0.4] '
     '"coneangle" [0.5] "conedeltaangle" [0.1] "string shadowname" ["raytrace"]\n'
 )
-# A 2 x 2 rect light 3 above the tuft, turned to face down (its own +z to world -y), a little
-# to the upper left; light 3 stays declared (the floor's Illuminate 3 0 names it) but dark.
+# A 2 x 2 rect light 3 above the tuft, turned to face down (Rotate 90 about x takes its own +z to
+# world -y), a little to the upper left; light 3 stays declared (the floor's Illuminate 3 0 names it) but dark.
 RECT = (
     "AttributeBegin\n"
     "Translate -1 3 1\n"
-    "Rotate -90 1 0 0\n"
+    "Rotate 90 1 0 0\n"
     "Scale 2 2 1\n"
-    'LightSource "rectlight" 2 "intensity" [1.5] "string shadowname" ["raytrace"] "int nsamples" [16]\n'
+    'LightSource "rectlight" 2 "intensity" [12] "string shadowname" ["raytrace"] "int nsamples" [16]\n'
     "AttributeEnd\n"
+    "Illuminate 2 1\n"  # a light declared in an attribute block is off after it (RI Spec 3.2 §4.3)
     'LightSource "ambientlight" 3 "intensity" [0]\n'
 )
 DOME = (
