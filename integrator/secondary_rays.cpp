@@ -62,6 +62,10 @@ std::array<float, 4> lobe_numbers(const LightSampleRotation& r, int k, float u0,
   return {float(h >> 40) * 0x1.0p-24f, u0, float((h >> 16) & 0xFFFFFF) * 0x1.0p-24f, u1};
 }
 
+// Above this ratio of an area light's stratum (its angular size over sqrt(samples)) to the
+// response's lobe width, the light and the shader's draws are combined by MIS.
+constexpr float kMisStratumPerLobeWidth = 1.4f;
+
 // Veach's power heuristic: the weight of a sample drawn with density `own` where another
 // technique, drawing as many samples, has density `other`.
 float power_weight(float own, float other) {
@@ -153,39 +157,57 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
       const LightSampleRotation rotation(sp.P, light_index);
       // Surfaces respond in the hemisphere their faced-forward normal points to; strands all around.
       const Vec3f around = at.is_curve ? Vec3f{} : lobes.Nf;
-      if (light->surrounds() && shader.can_sample_response(sp)) {
-        // Multiple importance sampling (Veach 1997, the power heuristic): half the samples from
-        // the light (by the map's texels), half from the shader's lobes (a fibre's, a few degrees
-        // wide), each weighed by its density against the other technique's, so that neither a
-        // narrow lobe nor a small bright texel is left to chance. Under a constant dome the
-        // light's own draw is uniform and adds only noise: the lobes draw every sample (for a
-        // fibre without absorption each weighs exactly its radiance).
-        const bool light_draws = !light->has_constant_radiance();
-        const LightSampleGrid grid(light_draws ? (n + 1) / 2 : n);
-        const LightSampleRotation lobe_rotation(sp.P, light_index | 0x80000000u);
-        const float share = 1.0f / float(grid.count());
-        const float inf = std::numeric_limits<float>::infinity();
+      // Multiple importance sampling (Veach 1997, the power heuristic) where the shader can draw
+      // directions by its response (a fibre's lobes, a few degrees wide) and a ray can meet the
+      // light (an area light's shape, the dome): half the samples from the light, half from the
+      // shader, each weighed by its density against the other technique's, so that neither a
+      // narrow lobe nor a small bright part of the light is left to chance. Under a constant dome
+      // the light's own draw is uniform and adds only noise: the shader draws every sample (for a
+      // fibre without absorption each then weighs exactly the dome's radiance).
+      bool mis = light->can_be_hit() && shader.can_sample_response(sp);
+      // An area light's own samples are strata of its solid angle: while a stratum is not much
+      // wider than the response's lobe they integrate it better than the lobe's draws do (which
+      // miss the light where the lobe is wider than it). Measured on a strand behind a 2x2 rect
+      // light (docs/lookdev.md): the crossover is a stratum of about 1.4 lobe widths.
+      if (LightExtent seen; mis && light->extent_toward(sp.P, seen))
+        mis = seen.half_angle * std::sqrt(kPi / float(n)) > kMisStratumPerLobeWidth * shader.response_lobe_width(sp);
+      const bool light_draws = !(mis && light->has_constant_radiance());
+      const LightSampleGrid grid(mis && light_draws ? (n + 1) / 2 : n);
+      const float share = 1.0f / float(grid.count());
+      const LightSampleRotation lobe_rotation(sp.P, light_index | 0x80000000u);
+      // take(whole, part, L, distance) for each sample: its estimate of the light's whole
+      // contribution (what prunes its shadow ray), the part it adds, toward L, `distance` away.
+      auto for_each_sample = [&](auto&& take) {
         for (int k = 0; k < grid.count(); ++k) {
           float u0, u1;
-          grid.point(k, rotation, u0, u1);
-          if (light_draws && light->sample(sp.P, around, u0, u1, lc)) {
-            float shader_pdf = 0;
-            const Vec3f whole = shader.response_and_pdf(sp, lobes, lc, shader_pdf);
-            const float w = power_weight(light->pdf(sp.P, around, lc.L), shader_pdf);
-            if (w > 0) add_shadowed(*light, whole, whole * (w * share), lc.L, lc.distance, 0.0f);
+          if (light_draws) {
+            grid.point(k, rotation, u0, u1);
+            if (light->sample(sp.P, around, u0, u1, lc)) {
+              if (!mis) {
+                const Vec3f whole = shader.response(sp, lobes, lc);
+                take(whole, whole * share, lc.L, lc.distance);
+              } else {
+                float shader_pdf = 0;
+                const Vec3f whole = shader.response_and_pdf(sp, lobes, lc, shader_pdf);
+                const float w = power_weight(lc.pdf, shader_pdf);
+                if (w > 0) take(whole, whole * (w * share), lc.L, lc.distance);
+              }
+            }
           }
+          if (!mis) continue;
           grid.point(k, lobe_rotation, u0, u1);
           SurfaceShader::ResponseSample drawn;
-          if (!shader.sample_response(sp, lobes, lobe_numbers(lobe_rotation, k, u0, u1), drawn)) continue;
+          LightHit met;
+          if (!shader.sample_response(sp, lobes, lobe_numbers(lobe_rotation, k, u0, u1), drawn) ||
+              !light->hit(sp.P, around, drawn.L, met))
+            continue;
           // Cl = L / (pi pdf), as the light's own samples carry it (shading/area_lights.h).
-          const Vec3f whole = mul(drawn.factor, light->environment(drawn.L)) * (1 / (kPi * drawn.pdf));
-          const float w = light_draws ? power_weight(drawn.pdf, light->pdf(sp.P, around, drawn.L)) : 1.0f;
-          if (w > 0) add_shadowed(*light, whole, whole * (w * share), drawn.L, inf, 0.0f);
+          LightContribution seen{met.radiance * (1 / (kPi * drawn.pdf)), drawn.L, false, met.distance, drawn.pdf};
+          const Vec3f whole = mul(drawn.factor, seen.Cl);
+          const float w = light_draws ? power_weight(drawn.pdf, met.pdf) : 1.0f;
+          if (w > 0) take(whole, whole * (w * share), drawn.L, met.distance);
         }
-        continue;
-      }
-      const LightSampleGrid grid(n);
-      const float share = 1.0f / float(grid.count());
+      };
       // With a footprint, a light with extent casts one cone shadow ray: its samples light the
       // point as if unoccluded, and their sum is dimmed by the mean transmittance over the cone
       // from the receiving patch to the light (visibility taken as independent of where on the
@@ -193,20 +215,14 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
       LightExtent extent;
       if (footprint && light->casts_shadows() && light->extent_toward(sp.P, extent)) {
         Vec3f unoccluded;
-        for (int k = 0; k < grid.count(); ++k) {
-          float u0, u1;
-          grid.point(k, rotation, u0, u1);
-          if (light->sample(sp.P, around, u0, u1, lc)) unoccluded += shader.response(sp, lobes, lc) * share;
-        }
+        for_each_sample([&](const Vec3f&, const Vec3f& part, const Vec3f&, float) { unoccluded += part; });
         if (max_component(unoccluded) <= 0) continue;
         if (add_shadowed(*light, unoccluded, unoccluded, extent.L, extent.distance, std::max(extent.half_angle, 1e-6f)))
           continue;
       }
-      for (int k = 0; k < grid.count(); ++k) {
-        float u0, u1;
-        grid.point(k, rotation, u0, u1);
-        if (light->sample(sp.P, around, u0, u1, lc)) add_light(*light, lc, share);
-      }
+      for_each_sample([&](const Vec3f& whole, const Vec3f& part, const Vec3f& L, float distance) {
+        add_shadowed(*light, whole, part, L, distance, 0.0f);
+      });
       continue;
     }
     if (!light->illuminate(sp.P, lc, footprint_radius)) continue;

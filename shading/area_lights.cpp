@@ -43,13 +43,36 @@ class FlatAreaLight : public Light {
     const float cos_l = -dot(normal_, L);  // the light's side faces P
     if (!(cos_l > 0)) return false;
     // By area: the sample stands for a solid angle area * cos_l / d^2.
-    out = {radiance_ * (area_ * cos_l / (d2 * kPi)), L, false, dist};
+    out = {radiance_ * (area_ * cos_l / (d2 * kPi)), L, false, dist, d2 / (area_ * cos_l)};
+    return true;
+  }
+  bool can_be_hit() const override { return true; }
+  // The plane of the shape, seen from its lit side, then the shape itself.
+  bool hit(const Vec3f& P, const Vec3f&, const Vec3f& L, LightHit& out) const override {
+    const float cos_l = -dot(normal_, L);
+    if (!(cos_l > 0) || !(area_ > 0)) return false;
+    const float t = dot(centre() - P, normal_) / -cos_l;
+    if (!(t > 0) || !std::isfinite(t) || !on_shape(P + L * t)) return false;
+    out.distance = t;
+    out.radiance = radiance_;
+    out.pdf = pdf_toward(P, t, cos_l);
     return true;
   }
 
  protected:
   virtual Vec3f point(float u0, float u1) const = 0;
   virtual Vec3f centre() const = 0;
+  // Whether a point of the shape's plane lies on the shape.
+  virtual bool on_shape(const Vec3f& X) const = 0;
+  // The density sample() draws a direction with that meets the shape `dist` away at cosine cos_l.
+  virtual float pdf_toward(const Vec3f& /*P*/, float dist, float cos_l) const { return dist * dist / (area_ * cos_l); }
+  // (u, v) of X - origin in the basis (e, f) of the plane (a parallelogram's own coordinates).
+  static void plane_coordinates(const Vec3f& d, const Vec3f& e, const Vec3f& f, float& u, float& v) {
+    const Vec3f n = cross(e, f);
+    const float n2 = length_squared(n);
+    u = dot(cross(d, f), n) / n2;
+    v = dot(cross(e, d), n) / n2;
+  }
 
   Vec3f radiance_;
   int samples_;
@@ -71,6 +94,41 @@ constexpr double kMinSphericalSolidAngle = 1e-3;
 constexpr double kMaxEdgeCosine = 1e-4;
 
 class RectLight : public FlatAreaLight {
+  // The rectangle as P sees it: a frame along its edges (z toward P's side negative, z0 < 0), the
+  // corners' coordinates, and the solid angle with the constants the sampling inverts.
+  struct SphericalRect {
+    Vec3d x, y, z;
+    double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, b0 = 0, b1 = 0, k = 0, solid_angle = 0;
+    bool behind = false;  // P on the unlit side: nothing
+  };
+  // False where the light is sampled by area instead (sheared, or under kMinSphericalSolidAngle),
+  // or not at all (r.behind).
+  bool spherical_rect(const Vec3f& P, SphericalRect& r) const {
+    const Vec3d o(P), s(corner_), exd(ex_), eyd(ey_);
+    const double lx = length(exd), ly = length(eyd);
+    if (!(lx > 0) || !(ly > 0) || std::abs(dot(exd, eyd)) > kMaxEdgeCosine * lx * ly) return false;
+    // Only the lit side sees the light (the plane is seen from one side by all of it).
+    if (!(dot(Vec3d(normal_), o - (s + (exd + eyd) * 0.5)) > 0)) {
+      r.behind = true;
+      return false;
+    }
+    r.x = exd / lx;
+    r.y = eyd / ly;
+    r.z = cross(r.x, r.y);
+    const Vec3d d = s - o;
+    r.z0 = dot(d, r.z);
+    if (r.z0 > 0) r.z = -r.z, r.z0 = -r.z0;
+    r.x0 = dot(d, r.x), r.y0 = dot(d, r.y), r.x1 = r.x0 + lx, r.y1 = r.y0 + ly;
+    const Vec3d v00{r.x0, r.y0, r.z0}, v01{r.x0, r.y1, r.z0}, v10{r.x1, r.y0, r.z0}, v11{r.x1, r.y1, r.z0};
+    const Vec3d n0 = normalize(cross(v00, v10)), n1 = normalize(cross(v10, v11)), n2 = normalize(cross(v11, v01)),
+                n3 = normalize(cross(v01, v00));
+    auto angle = [](const Vec3d& a, const Vec3d& b) { return std::acos(std::clamp(-dot(a, b), -1.0, 1.0)); };
+    const double g0 = angle(n0, n1), g1 = angle(n1, n2), g2 = angle(n2, n3), g3 = angle(n3, n0);
+    r.b0 = n0.z, r.b1 = n2.z, r.k = 2 * std::numbers::pi - g2 - g3;
+    r.solid_angle = g0 + g1 - r.k;
+    return r.solid_angle >= kMinSphericalSolidAngle && std::isfinite(r.solid_angle);
+  }
+
  public:
   RectLight(const Vec3f& radiance, int samples, const Vec3f& corner, const Vec3f& ex, const Vec3f& ey,
             const Vec3f& normal)
@@ -80,46 +138,42 @@ class RectLight : public FlatAreaLight {
         ey_(ey) {}
 
   bool sample(const Vec3f& P, float u0, float u1, LightContribution& out) const override {
-    const Vec3d o(P), s(corner_), exd(ex_), eyd(ey_);
-    const double lx = length(exd), ly = length(eyd);
-    if (!(lx > 0) || !(ly > 0) || std::abs(dot(exd, eyd)) > kMaxEdgeCosine * lx * ly)
+    SphericalRect r;
+    if (!spherical_rect(P, r)) {
+      if (r.behind) return false;
       return FlatAreaLight::sample(P, u0, u1, out);
-    // Only the lit side sees the light (the plane is seen from one side by all of it).
-    if (!(dot(Vec3d(normal_), o - (s + (exd + eyd) * 0.5)) > 0)) return false;
-    // The rectangle's frame: x, y along its edges, z toward P's side negative (z0 < 0).
-    const Vec3d x = exd / lx, y = eyd / ly;
-    Vec3d z = cross(x, y);
-    const Vec3d d = s - o;
-    double z0 = dot(d, z);
-    if (z0 > 0) z = -z, z0 = -z0;
-    const double x0 = dot(d, x), y0 = dot(d, y), x1 = x0 + lx, y1 = y0 + ly;
-    const Vec3d v00{x0, y0, z0}, v01{x0, y1, z0}, v10{x1, y0, z0}, v11{x1, y1, z0};
-    const Vec3d n0 = normalize(cross(v00, v10)), n1 = normalize(cross(v10, v11)), n2 = normalize(cross(v11, v01)),
-                n3 = normalize(cross(v01, v00));
-    auto angle = [](const Vec3d& a, const Vec3d& b) { return std::acos(std::clamp(-dot(a, b), -1.0, 1.0)); };
-    const double g0 = angle(n0, n1), g1 = angle(n1, n2), g2 = angle(n2, n3), g3 = angle(n3, n0);
-    const double b0 = n0.z, b1 = n2.z, k = 2 * std::numbers::pi - g2 - g3;
-    const double solid_angle = g0 + g1 - k;
-    if (!(solid_angle >= kMinSphericalSolidAngle) || !std::isfinite(solid_angle))
-      return FlatAreaLight::sample(P, u0, u1, out);
+    }
     // u0 picks the solid angle to the left of a plane through P and the line x = xu; u1 the
     // height along that line, uniform in the sine of its elevation.
-    const double au = double(u0) * solid_angle + k;
-    const double fu = (std::cos(au) * b0 - b1) / std::sin(au);
-    double cu = std::copysign(1.0, fu) / std::sqrt(fu * fu + b0 * b0);
+    const double au = double(u0) * r.solid_angle + r.k;
+    const double fu = (std::cos(au) * r.b0 - r.b1) / std::sin(au);
+    double cu = std::copysign(1.0, fu) / std::sqrt(fu * fu + r.b0 * r.b0);
     cu = std::clamp(cu, -1.0, 1.0);
-    double xu = -(cu * z0) / std::max(std::sqrt(1 - cu * cu), 1e-300);
-    xu = std::clamp(std::isfinite(xu) ? xu : (cu > 0 ? x1 : x0), x0, x1);
-    const double dist_xz = std::sqrt(xu * xu + z0 * z0);
-    const double h0 = y0 / std::sqrt(dist_xz * dist_xz + y0 * y0), h1 = y1 / std::sqrt(dist_xz * dist_xz + y1 * y1);
+    double xu = -(cu * r.z0) / std::max(std::sqrt(1 - cu * cu), 1e-300);
+    xu = std::clamp(std::isfinite(xu) ? xu : (cu > 0 ? r.x1 : r.x0), r.x0, r.x1);
+    const double dist_xz = std::sqrt(xu * xu + r.z0 * r.z0);
+    const double h0 = r.y0 / std::sqrt(dist_xz * dist_xz + r.y0 * r.y0),
+                 h1 = r.y1 / std::sqrt(dist_xz * dist_xz + r.y1 * r.y1);
     const double hv = h0 + double(u1) * (h1 - h0), hv2 = hv * hv;
-    const double yv = hv2 < 1 - 1e-12 ? std::clamp(hv * dist_xz / std::sqrt(1 - hv2), y0, y1) : y1;
-    const Vec3d to_point = x * xu + y * yv + z * z0;
+    const double yv = hv2 < 1 - 1e-12 ? std::clamp(hv * dist_xz / std::sqrt(1 - hv2), r.y0, r.y1) : r.y1;
+    const Vec3d to_point = r.x * xu + r.y * yv + r.z * r.z0;
     const double dist = length(to_point);
     if (!(dist > 0) || !std::isfinite(dist)) return FlatAreaLight::sample(P, u0, u1, out);
     // Each sample stands for the same solid angle.
-    out = {radiance_ * float(solid_angle / std::numbers::pi), Vec3f(to_point / dist), false, float(dist)};
+    out = {radiance_ * float(r.solid_angle / std::numbers::pi), Vec3f(to_point / dist), false, float(dist),
+           float(1 / r.solid_angle)};
     return true;
+  }
+
+ protected:
+  bool on_shape(const Vec3f& X) const override {
+    float u, v;
+    plane_coordinates(X - corner_, ex_, ey_, u, v);
+    return u >= 0 && u <= 1 && v >= 0 && v <= 1;
+  }
+  float pdf_toward(const Vec3f& P, float dist, float cos_l) const override {
+    SphericalRect r;
+    return spherical_rect(P, r) ? float(1 / r.solid_angle) : FlatAreaLight::pdf_toward(P, dist, cos_l);
   }
 
  protected:
@@ -143,6 +197,11 @@ class DiskLight : public FlatAreaLight {
     return centre_ + a_ * p.x + b_ * p.y;
   }
   Vec3f centre() const override { return centre_; }
+  bool on_shape(const Vec3f& X) const override {
+    float u, v;
+    plane_coordinates(X - centre_, a_, b_, u, v);
+    return u * u + v * v <= 1;
+  }
 
  private:
   Vec3f centre_, a_, b_;
@@ -189,7 +248,23 @@ class SphereLight : public Light {
     const float h2 = std::max(0.0f, r2 - (d2 - along * along));
     const float dist = std::max(0.0f, along - std::sqrt(h2));
     // The sample stands for the cone's solid angle 2 pi (1 - cos theta_max).
-    out = {radiance_ * (2 * one_minus_cos_max), L, false, dist};
+    out = {radiance_ * (2 * one_minus_cos_max), L, false, dist, 1 / (2 * kPi * one_minus_cos_max)};
+    return true;
+  }
+  bool can_be_hit() const override { return true; }
+  // The near side of the sphere; the density of the uniform cone.
+  bool hit(const Vec3f& P, const Vec3f&, const Vec3f& L, LightHit& out) const override {
+    const Vec3f to_centre = centre_ - P;
+    const float d2 = length_squared(to_centre), r2 = radius_ * radius_;
+    if (!(d2 > r2)) return false;
+    const float along = dot(to_centre, L);
+    const float h2 = r2 - (d2 - along * along);
+    if (!(along > 0) || !(h2 >= 0)) return false;
+    const float sin2_max = r2 / d2;
+    const float one_minus_cos_max = sin2_max / (1 + std::sqrt(std::max(0.0f, 1 - sin2_max)));
+    out.distance = std::max(0.0f, along - std::sqrt(h2));
+    out.radiance = radiance_;
+    out.pdf = 1 / (2 * kPi * one_minus_cos_max);
     return true;
   }
 

@@ -29,14 +29,15 @@ class DomeLight : public Light {
       // Cl = L / (pi pdf): RI's diffuse() carries no 1/pi (shading/area_lights.h).
       LatLongMap::Sample s;
       if (!map_->sample(u0, u1, s)) return false;
-      out = {mul(radiance_, s.radiance) * (1 / (kPi * s.pdf)), unit(to_world_.transform_vector(Vec3d(s.direction))), false, inf};
+      out = {mul(radiance_, s.radiance) * (1 / (kPi * s.pdf)), unit(to_world_.transform_vector(Vec3d(s.direction))), false,
+             inf, s.pdf};
       return true;
     }
     const float phi = 2 * kPi * u1;
     if (length_squared(N) == 0.0f) {
       // Uniform over the sphere: pdf 1 / (4 pi), so the sample stands for 4 pi steradians.
       const float z = 1 - 2 * u0, r = std::sqrt(std::max(0.0f, 1 - z * z));
-      out = {radiance_ * 4.0f, Vec3f{r * std::cos(phi), r * std::sin(phi), z}, false, inf};
+      out = {radiance_ * 4.0f, Vec3f{r * std::cos(phi), r * std::sin(phi), z}, false, inf, 1 / (4 * kPi)};
       return true;
     }
     // By the cosine about N (Malley): pdf cos / pi, so the sample stands for pi / cos.
@@ -45,15 +46,18 @@ class DomeLight : public Light {
     const Vec3f a = normalize(std::abs(N.x) < 0.9f ? cross(N, Vec3f{1, 0, 0}) : cross(N, Vec3f{0, 1, 0}));
     const Vec3f b = cross(N, a);
     const Vec3f L = normalize(N * cos_t + a * (sin_t * std::cos(phi)) + b * (sin_t * std::sin(phi)));
-    out = {radiance_ * (1 / cos_t), L, false, inf};
+    out = {radiance_ * (1 / cos_t), L, false, inf, cos_t / kPi};
     return true;
   }
-  bool surrounds() const override { return true; }
+  bool can_be_hit() const override { return true; }
   bool has_constant_radiance() const override { return !map_; }
-  float pdf(const Vec3f&, const Vec3f& N, const Vec3f& L) const override {
-    if (map_) return map_->pdf(unit(to_dome_.transform_vector(Vec3d(L))));
-    if (length_squared(N) == 0.0f) return 1 / (4 * kPi);
-    return std::max(0.0f, dot(N, L)) / kPi;
+  bool hit(const Vec3f&, const Vec3f& N, const Vec3f& L, LightHit& out) const override {
+    out.distance = std::numeric_limits<float>::infinity();
+    out.radiance = environment(L);
+    if (map_) out.pdf = map_->pdf(unit(to_dome_.transform_vector(Vec3d(L))));
+    else if (length_squared(N) == 0.0f) out.pdf = 1 / (4 * kPi);
+    else out.pdf = std::max(0.0f, dot(N, L)) / kPi;
+    return true;
   }
   Vec3f environment(const Vec3f& d) const override {
     if (!map_) return radiance_;

@@ -16,6 +16,14 @@ struct LightContribution {
   Vec3f L;
   bool ambient = false;  // ambient lights have no direction: only ambient() sees them
   float distance = 0;    // to the light position (infinity for distant lights)
+  float pdf = 0;         // a sampled light's density per steradian for L (0: not sampled)
+};
+
+// Where a ray from a point along a direction meets a light (Light::hit).
+struct LightHit {
+  float distance = 0;  // infinity for the dome
+  Vec3f radiance;      // the light's radiance toward the point
+  float pdf = 0;       // the density per steradian the light's own sample() draws that direction with
 };
 
 // A light with extent as one shadow ray sees it from a point (Light::extent_toward): the unit
@@ -51,15 +59,16 @@ class Light {
   // The radiance a ray leaving the scene along unit direction d receives from this light (a
   // dome's, at infinity); black for lights that are not at infinity all around.
   virtual Vec3f environment(const Vec3f& /*d*/) const { return {}; }
-  // A light at infinity all around (the dome): every direction sees it, with radiance
-  // environment(d), so directions a shader draws can light too (multiple importance sampling).
-  virtual bool surrounds() const { return false; }
+  // A light a ray can meet (the area lights' shapes, the dome all around): directions a shader
+  // draws can light too, weighed against the light's own samples (multiple importance sampling,
+  // integrator/secondary_rays.cpp). hit(): whether the ray from P along unit L meets the light's
+  // lit side, where, its radiance and the density sample(P, N, ...) draws L with.
+  virtual bool can_be_hit() const { return false; }
+  virtual bool hit(const Vec3f& /*P*/, const Vec3f& /*N*/, const Vec3f& /*L*/, LightHit& /*out*/) const { return false; }
   // The same radiance along every direction (a dome without a map): drawing directions by the
   // light then does no better than uniformly, and a shader that can draw by its response should
   // draw them all.
   virtual bool has_constant_radiance() const { return false; }
-  // The density per steradian that sample(P, N, ...) draws the unit direction L with.
-  virtual float pdf(const Vec3f& /*P*/, const Vec3f& /*N*/, const Vec3f& /*L*/) const { return 0.0f; }
   // A light at infinity seen as a small disc (a sun): the half-angle of the cone it subtends, in
   // radians (0: none). A tracer with footprints may trace one shadow ray whose footprint widens
   // with that cone instead of samples() rays (SecondaryRayTracer::cone_shadow_transmittance).

@@ -215,6 +215,10 @@ class ChiangHairSurface : public SurfaceShader {
   // The fibre's lobes drawn across its width (ChiangHair::sample_across): under a dome they are a
   // few degrees wide where the dome's own samples cover the whole sphere.
   bool can_sample_response(const ShadingPoint& sp) const override { return length_squared(sp.dPdv) > 0.0f; }
+  // The R lobe's longitudinal standard deviation (TT's is half of it, TRT's twice).
+  float response_lobe_width(const ShadingPoint&) const override {
+    return std::sqrt(ChiangHair::longitudinal_variance(hair_.params().beta_m));
+  }
   bool sample_response(const ShadingPoint& sp, const SurfaceLobes&, const std::array<float, 4>& u,
                        ResponseSample& out) const override {
     const Vec3f T = normalize(sp.dPdv);

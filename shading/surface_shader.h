@@ -56,6 +56,9 @@ class SurfaceShader {
     float pdf = 0;
   };
   virtual bool can_sample_response(const ShadingPoint&) const { return false; }
+  // The angular width (radians, a standard deviation) of the narrowest part of the response the
+  // draws follow: what decides whether drawing by the response beats the light's own strata.
+  virtual float response_lobe_width(const ShadingPoint&) const { return 0.0f; }
   // `u`: four uniform numbers in [0, 1). False: no direction (the draw failed).
   virtual bool sample_response(const ShadingPoint&, const SurfaceLobes&, const std::array<float, 4>& /*u*/,
                                ResponseSample&) const {

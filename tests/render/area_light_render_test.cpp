@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "shading/chiang_hair.h"
 #include "support/render.h"
 
 namespace darc {
@@ -149,6 +150,71 @@ TEST(AreaLightRender, OneConeShadowRayGivesTheSoftShadowOfStrands) {
   const RayCounters& c = cone.stats.counters;
   const uint64_t shadow_rays = c.traced_by_kind[int(SecondaryKind::Shadow)] + c.pruned_by_kind[int(SecondaryKind::Shadow)];
   EXPECT_LT(shadow_rays, 4 * c.fragments) << "about one shadow ray per shaded fragment, not 256";
+}
+
+}  // namespace
+}  // namespace darc
+
+namespace darc {
+namespace {
+
+// A horizontal chianghair strand (along x, seen along +z) with a 4x2 rect light behind it (z = 1,
+// facing the camera), the other side of the strand from the camera: the fibre's TT lobe carries
+// the light through. (The lobe looks straight through: a point 0.05 inside an edge of the light
+// along the fibre gets half as much, so the light reaches past the image's sides, where the
+// stochastic hider's points move within their pixels.) At beta 0.1 and 64 samples the light's
+// strata (0.22 rad) are wider than 1.4 lobe widths (0.08 rad), so half the samples are drawn from the fibre's lobes and both halves
+// weighed by MIS (integrator/secondary_rays.cpp). Each pixel's light must be the integral of the
+// fibre's S across its width over the rectangle, computed here over the light's area: a wrong
+// density in the weights (the spherical rectangle's 1 / solid angle, a lobe's pdf) biases it (by
+// area instead of by solid angle: +11 %). With shadows on, the distance hider's one cone shadow
+// ray sees nothing between, so the same.
+TEST(AreaLightRender, AHairStrandUnderARectLightGetsTheFibresIntegralOverTheRectangle) {
+  ChiangHairParams params;
+  params.sigma_a = {0.2f, 0.2f, 0.2f};
+  params.beta_m = params.beta_n = 0.1f;
+  const ChiangHair hair(params);
+  const Vec3f T{1, 0, 0}, wo{0, 0, -1};
+  // The three middle rows are wholly strand: pixel centres at x, y = -1 + (i + 0.5) 2 / 9, z = 0.
+  constexpr int kGridX = 160, kGridY = 80, kRows[] = {3, 4, 5};
+  double expected = 0;
+  for (int j : kRows)
+    for (int i = 0; i < kSize; ++i) {
+      const Vec3f P{-1 + (float(i) + 0.5f) * 2 / kSize, 1 - (float(j) + 0.5f) * 2 / kSize, 0};
+      double sum = 0;
+      for (int a = 0; a < kGridX; ++a)
+        for (int b = 0; b < kGridY; ++b) {
+          const Vec3f X{-2 + (float(a) + 0.5f) * 4 / kGridX, -1 + (float(b) + 0.5f) * 2 / kGridY, 1};
+          const Vec3f d = X - P;
+          const float d2 = length_squared(d);
+          const Vec3f wi = d / std::sqrt(d2);
+          // dw = cos_l dA / d^2, cos_l = wi.z (the light faces -z), dA = (4 / kGridX) (2 / kGridY).
+          sum += hair.scattering_across(T, wo, wi).x * wi.z / d2 * (8.0 / (kGridX * kGridY));
+        }
+      expected += sum / (3 * kSize);
+    }
+  ASSERT_GT(expected, 0.1) << "the rectangle lies in the fibre's forward lobe";
+  for (const std::string shadows : {"", "\"string shadowname\" [\"raytrace\"] "}) {
+    std::ostringstream s;
+    s << "Format " << kSize << " " << kSize << " 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\n"
+      << "Projection \"orthographic\"\nScreenWindow -1 1 -1 1\nTranslate 0 0 10\nWorldBegin\n"
+      << "AttributeBegin\nTranslate 0 0 1\nRotate 180 0 1 0\nScale 4 2 1\n"
+      << "LightSource \"rectlight\" 1 \"intensity\" [1] " << shadows << "\"int nsamples\" [64]\nAttributeEnd\n"
+      << "Illuminate 1 1\n"
+      << "Surface \"chianghair\" \"color sigma_a\" [0.2 0.2 0.2] \"float beta_m\" [0.1] \"float beta_n\" [0.1]\n"
+      << "Curves \"linear\" [2] \"nonperiodic\" \"P\" [-2 0 0  2 0 0] \"constantwidth\" [1]\nWorldEnd\n";
+    for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
+      const Image image = render_image(s.str(), hider);
+      double mean = 0;
+      for (int j : kRows)
+        for (int x = 0; x < kSize; ++x) {
+          ASSERT_EQ(image.at(x, j, 3), 1.0f) << to_string(hider) << " " << x << "," << j;
+          mean += image.at(x, j, 0) / (3 * kSize);
+        }
+      // 27 points, each scattering by about 8 % at 64 samples.
+      EXPECT_NEAR(mean, expected, 0.04 * expected) << to_string(hider) << " shadows: " << shadows;
+    }
+  }
 }
 
 }  // namespace
