@@ -39,6 +39,26 @@ constexpr float kMaxTextureStretch = 1000.0f;
 // RI's default TextureCoordinates: s = u, t = v (the request is not supported: README).
 constexpr std::array<float, 8> kDefaultTextureCoordinates{0, 0, 1, 0, 0, 1, 1, 1};
 
+// A strand's s, t at u (its "st" or "s", "t" primvars, 0 without them) and their change over the
+// footprint's length along it (it.dPdx, the band rays leave; zero for exact rays): coordinates
+// follow the strand, not its width, so nothing changes across it (uniform st, a scalp map, is one
+// texel lookup per strand, and the footprint's coverage of many strands filters across the scalp).
+TextureCoordinates strand_texture_coordinates(const CurveSet& cs, uint32_t local, const Ray& ray, float u,
+                                              const Interaction& it) {
+  const SegmentShading& sh = cs.segment_shading(local);
+  TextureCoordinates st;
+  st.s = bezier(sh.s.data(), u);
+  st.t = bezier(sh.t.data(), u);
+  Vec3f at_time[4];
+  const float speed = length(bezier_derivative(cs.control_points_at(local, ray.time, at_time), u));
+  if (speed > 0.0f) {
+    const float du = std::abs(dot(it.dPdx, it.dPdv)) / speed;  // u across the footprint along the strand
+    st.dsdx = bezier_derivative(sh.s.data(), u) * du;
+    st.dtdx = bezier_derivative(sh.t.data(), u) * du;
+  }
+  return st;
+}
+
 // The offset of a neighbouring ray's hit on the plane through P with normal n (Igehy's transfer):
 // the neighbour at parameter t is at P + axis, then slides along d onto the plane.
 Vec3f transfer(const Vec3f& axis, const Vec3f& d, const Vec3f& n, float max_stretch = kMaxGrazingStretch) {
@@ -179,6 +199,7 @@ Interaction make_interaction(const Scene& scene, uint32_t primitive, const Ray& 
       it.dPdy = ay;
     }
   }
+  if (scene.materials[it.material].reads_textures) it.st = strand_texture_coordinates(scene.curves, local, ray, u, it);
   return it;
 }
 

@@ -39,8 +39,8 @@ struct Interaction {
   Vec3f dPdx, dPdy;
   Vec3f dNdx, dNdy;
   // Texture coordinates at P and their changes across the footprint (SurfaceSet::
-  // texture_coordinates) when the surface's material reads textures (Material::reads_textures);
-  // zero otherwise, and on curves and points, which have none yet.
+  // texture_coordinates; on curves their "st" along the strand) when the material reads textures
+  // (Material::reads_textures); zero otherwise, and on points, which have none yet.
   TextureCoordinates st;
 };
 

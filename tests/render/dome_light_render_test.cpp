@@ -41,10 +41,10 @@ TEST(DomeLightRender, AWhiteDiffuseSphereUnderAUnitDomeHasRadianceOneOverItsWhol
 }
 
 // A horizontal strand of Chiang hair under the dome: with sigma_a 0 the fibre loses no energy, so
-// what it scatters toward the camera integrates the dome's radiance 1; absorption darkens it. Half
-// the samples follow the dome (uniform over the sphere), half the fibre's lobes, weighed by MIS
-// (integrator/secondary_rays.cpp): narrow lobes converge as fast as rough ones. (Before the
-// fibre's lobes were drawn, beta 0.3 still scattered by 10 % at 4096 samples.)
+// what it scatters toward the camera integrates the dome's radiance 1; absorption darkens it. A
+// dome without a map leaves every sample to the fibre's lobes (integrator/secondary_rays.cpp): a
+// clear fibre's samples each weigh the dome's radiance, and narrow lobes converge as fast as rough
+// ones. (Sampling the dome uniformly over the sphere, beta 0.3 still scattered by 10 % at 4096.)
 float hair_under_dome(const std::string& absorption, HiderKind hider, float beta = 0.7f, int samples = 256) {
   constexpr int kSize = 9;
   std::ostringstream s;

@@ -102,6 +102,49 @@ TEST(TextureRender, SRunsAcrossTheImageAndTDownItOnPatchesAndPolygons) {
     }
 }
 
+// Curves read textures by their "st" (or "s", "t") primvars: uniform st gives a strand one texel
+// (a scalp map), vertex st follows the strand. The quadrants texture: (s, t) < (0.5, 0.5) bright
+// red, s > 0.5 bright blue, t > 0.5 the dim halves (0.5).
+TEST(TextureRender, CurvesReadTexturesByTheirStPrimvars) {
+  ScratchDir dir("texture_curves");
+  const std::string texture = test::write_quadrants_texture(dir);
+  const std::string head =
+      "Format 8 8 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\nProjection \"orthographic\"\nTranslate 0 0 5\nWorldBegin\n"
+      "LightSource \"ambientlight\" 1 \"intensity\" [1]\nSurface \"paintedplastic\" \"texturename\" [\"" +
+      texture + "\"] \"Kd\" [0] \"Ks\" [0]\n";
+  // Two horizontal strands, y = 0.5 (rows 1, 2) and y = -0.5 (rows 5, 6), one st each.
+  const std::string uniform =
+      head + "Curves \"linear\" [2 2] \"nonperiodic\" \"P\" [-2 0.5 0  2 0.5 0  -2 -0.5 0  2 -0.5 0] "
+             "\"constantwidth\" [0.5] \"uniform float[2] st\" [0.25 0.25  0.75 0.75]\nWorldEnd\n";
+  // The same with "s" and "t" apart.
+  const std::string apart =
+      head + "Curves \"linear\" [2 2] \"nonperiodic\" \"P\" [-2 0.5 0  2 0.5 0  -2 -0.5 0  2 -0.5 0] "
+             "\"constantwidth\" [0.5] \"uniform float s\" [0.25 0.75] \"uniform float t\" [0.25 0.75]\nWorldEnd\n";
+  // One vertical strand at x = 0 (columns 3, 4) whose t runs from 0 at the top to 1 at the bottom.
+  const std::string along =
+      head + "Curves \"cubic\" [4] \"nonperiodic\" \"P\" [0 1 0  0 0.33 0  0 -0.33 0  0 -1 0] "
+             "\"constantwidth\" [0.5] \"vertex float[2] st\" [0.25 0  0.25 0.333  0.25 0.667  0.25 1]\nWorldEnd\n";
+  for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
+    for (const std::string& rib : {uniform, apart}) {
+      const Image image = render_image(rib, hider);
+      for (int x = 1; x < 7; ++x) {
+        EXPECT_NEAR(image.at(x, 1, 0), 1.0f, 0.02f) << to_string(hider) << " x " << x;  // bright red
+        EXPECT_NEAR(image.at(x, 1, 2), 0.0f, 0.02f) << to_string(hider) << " x " << x;
+        EXPECT_NEAR(image.at(x, 6, 2), 0.5f, 0.02f) << to_string(hider) << " x " << x;  // dim blue
+        EXPECT_NEAR(image.at(x, 6, 0), 0.0f, 0.02f) << to_string(hider) << " x " << x;
+      }
+    }
+    // Bezier basis, vertex st at the control points: t is linear along the strand (the control
+    // points are evenly spaced), so t < 0.5 above y = 0.
+    const Image image = render_image(along, hider);
+    for (int x : {3, 4}) {
+      EXPECT_NEAR(image.at(x, 1, 0), 1.0f, 0.02f) << to_string(hider);  // top: bright red
+      EXPECT_NEAR(image.at(x, 6, 0), 0.5f, 0.02f) << to_string(hider);  // bottom: dim red
+      EXPECT_NEAR(image.at(x, 6, 2), 0.0f, 0.02f) << to_string(hider);
+    }
+  }
+}
+
 // A sphere's s follows its longitude: the texture's left half is on one side of it.
 TEST(TextureRender, ASphereIsTexturedByItsParameters) {
   ScratchDir dir("texture_sphere");

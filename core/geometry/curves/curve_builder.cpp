@@ -116,6 +116,9 @@ void validate_input(const CurvesInput& input, const CurvesTopology& topology) {
   validate_primvar(input.N, "N", 3, topology);
   validate_primvar(input.Cs, "Cs", 3, topology);
   validate_primvar(input.Os, "Os", 3, topology);
+  validate_primvar(input.st, "st", 2, topology);
+  validate_primvar(input.s, "s", 1, topology);
+  validate_primvar(input.t, "t", 1, topology);
   if (input.constantwidth && !std::isfinite(*input.constantwidth)) throw RibError("\"constantwidth\" is not finite");
 }
 
@@ -214,6 +217,18 @@ SegmentOutcome append_segment(CurveSet& set, const CurvesInput& input, const Seg
   SegmentShading colours;
   colour(input.Cs, input.default_cs, colours.cs);
   colour(input.Os, input.default_os, colours.os);
+  auto coordinate = [&](const std::optional<PrimvarInput>& pv, int comp, std::array<float, 4>& out) {
+    if (!pv) return;
+    const std::array<double, 4> c = primvar_bezier(*pv, comp, s, input.cubic, conversion);
+    for (int i = 0; i < 4; ++i) out[size_t(i)] = static_cast<float>(c[size_t(i)]);
+  };
+  if (input.st) {
+    coordinate(input.st, 0, colours.s);
+    coordinate(input.st, 1, colours.t);
+  } else {
+    coordinate(input.s, 0, colours.s);
+    coordinate(input.t, 0, colours.t);
+  }
   const Vec3f normals[2] = {n0, n1};
   set.add_segment(cp, world_width, strand, attribute_id, colours, oriented ? normals : nullptr);
   return SegmentOutcome::Added;

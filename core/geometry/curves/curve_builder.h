@@ -34,6 +34,8 @@ struct CurvesInput {
   std::optional<float> constantwidth;  // used when `width` is absent; the default width is 1.0
   std::optional<PrimvarInput> N;       // present: oriented ribbons; absent: ribbons facing the ray
   std::optional<PrimvarInput> Cs, Os;
+  // Texture coordinates: "st" (2 numbers per value), else "s" and "t" (1 each; a missing one is 0).
+  std::optional<PrimvarInput> st, s, t;
   Vec3f default_cs{1, 1, 1}, default_os{1, 1, 1};  // the current Color / Opacity attributes
   Matrix4 object_to_world;
 };

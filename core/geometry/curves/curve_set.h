@@ -3,8 +3,9 @@
 // first control point), v ACROSS the ribbon (RIB calls these v and u respectively).
 //
 // What a segment costs (docs/performance-640.md, "Memory"): 48 bytes of control points, 16 of
-// width, 4 + 4 of strand and attribute ids, 4 of shading index, 1 of flags; colour and opacity
-// are stored once per distinct value (a Curves call without Cs/Os shares one entry), end normals
+// width, 4 + 4 of strand and attribute ids, 4 of shading index, 1 of flags; colour, opacity and
+// texture coordinates are stored once per distinct value (a Curves call without Cs/Os/st shares
+// one entry; st varying along strands makes one per segment: 128 bytes), end normals
 // only when some segment is oriented.
 #pragma once
 
@@ -39,10 +40,13 @@ inline constexpr uint32_t kNoStrand = std::numeric_limits<uint32_t>::max();
 inline constexpr size_t kControlPointsPerSegment = 4;  // a cubic Bézier
 inline constexpr size_t kNormalsPerSegment = 2;        // one at each end of the segment
 
-// The Bézier coefficients of a segment's colour (Cs) and opacity (Os).
+// The Bézier coefficients of a segment's colour (Cs), opacity (Os) and texture coordinates (s, t:
+// the "st" or "s" and "t" primvars; 0 without them). Uniform st (a scalp map) shares one entry
+// along a strand; st that varies along it makes an entry per segment.
 struct SegmentShading {
   std::array<Vec3f, 4> cs{Vec3f{1, 1, 1}, Vec3f{1, 1, 1}, Vec3f{1, 1, 1}, Vec3f{1, 1, 1}};
   std::array<Vec3f, 4> os{Vec3f{1, 1, 1}, Vec3f{1, 1, 1}, Vec3f{1, 1, 1}, Vec3f{1, 1, 1}};
+  std::array<float, 4> s{}, t{};
   bool operator==(const SegmentShading&) const = default;
 };
 
@@ -84,6 +88,7 @@ struct CurveSet {
   const float* widths(size_t i) const { return width.data() + i * kControlPointsPerSegment; }
   const Vec3f* colors(size_t i) const { return shading[shading_index[i]].cs.data(); }
   const Vec3f* opacities(size_t i) const { return shading[shading_index[i]].os.data(); }
+  const SegmentShading& segment_shading(size_t i) const { return shading[shading_index[i]]; }
   bool oriented(size_t i) const { return (flags[i] & kSegmentOriented) != 0; }
   // The unit normal at end k (0: u = 0, 1: u = 1) of an oriented segment.
   Vec3f end_normal(size_t i, int k) const { return normal[i * kNormalsPerSegment + size_t(k)]; }

@@ -316,6 +316,11 @@ void SceneBuilder::build_curves(const std::string& type, const std::vector<int>&
   in.N = primvar(params, "N", 3);
   in.Cs = primvar(params, "Cs", 3);
   in.Os = primvar(params, "Os", 3);
+  in.st = primvar(params, "st", 2);
+  if (!in.st) {
+    in.s = primvar(params, "s", 1);
+    in.t = primvar(params, "t", 1);
+  }
   in.default_cs = attributes_.color;
   in.default_os = attributes_.opacity;
   in.object_to_world = ctm_;
