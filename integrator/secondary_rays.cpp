@@ -158,7 +158,7 @@ ShadedPoint shade_with_secondary_rays(const SceneShading& shading, const Seconda
       // Surfaces respond in the hemisphere their faced-forward normal points to; strands all around.
       const Vec3f around = at.is_curve ? Vec3f{} : lobes.Nf;
       // Multiple importance sampling (Veach 1997, the power heuristic) where the shader can draw
-      // directions by its response (a fibre's lobes, a few degrees wide) and a ray can meet the
+      // directions by its response (a fibre's lobes, 2-17 degrees wide) and a ray can meet the
       // light (an area light's shape, the dome): half the samples from the light, half from the
       // shader, each weighed by its density against the other technique's, so that neither a
       // narrow lobe nor a small bright part of the light is left to chance. Under a constant dome
