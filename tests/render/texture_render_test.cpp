@@ -145,6 +145,37 @@ TEST(TextureRender, CurvesReadTexturesByTheirStPrimvars) {
   }
 }
 
+// A patch's "st" (varying: one value per corner, bilinear between) replaces its (u, v): mirrored
+// in s, its top left shows the texture's top right. On a PatchMesh of two patches the corners'
+// values hold per patch, and "s", "t" apart do the same.
+TEST(TextureRender, APatchsStPrimvarMapsItsCorners) {
+  ScratchDir dir("texture_patch_st");
+  const std::string texture = test::write_quadrants_texture(dir);
+  const std::string head =
+      "Format 8 8 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\nProjection \"orthographic\"\nTranslate 0 0 5\n"
+      "WorldBegin\nLightSource \"ambientlight\" 1 \"intensity\" [1]\nSurface \"paintedplastic\" \"texturename\" [\"" +
+      texture + "\"] \"Kd\" [0] \"Ks\" [0]\n";
+  const std::string mirrored = head + "Patch \"bilinear\" \"P\" [-1 1 0  1 1 0  -1 -1 0  1 -1 0] "
+                                      "\"varying float[2] st\" [1 0  0 0  1 1  0 1]\nWorldEnd\n";
+  // Two patches side by side (u runs over both): s runs from 0.5 to 1 over the left one (blue) and
+  // back from 1 to 0 over the right one (blue, then red past its middle); t as usual.
+  const std::string mesh = head + "PatchMesh \"bilinear\" 3 \"nonperiodic\" 2 \"nonperiodic\" "
+                                  "\"P\" [-1 1 0  0 1 0  1 1 0  -1 -1 0  0 -1 0  1 -1 0] "
+                                  "\"varying float s\" [0.5 1 0  0.5 1 0] \"varying float t\" [0 0 0  1 1 1]\nWorldEnd\n";
+  for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
+    const Image m = render_image(mirrored, hider);
+    EXPECT_NEAR(m.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // top left: bright blue
+    EXPECT_NEAR(m.at(1, 1, 0), 0.0f, 0.02f) << to_string(hider);
+    EXPECT_NEAR(m.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // top right: bright red
+    EXPECT_NEAR(m.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // bottom right: dim red
+    const Image p = render_image(mesh, hider);
+    EXPECT_NEAR(p.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // left patch, top: bright blue
+    EXPECT_NEAR(p.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // right patch, top (s 0.375): bright red
+    EXPECT_NEAR(p.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // right patch, bottom: dim red
+    EXPECT_NEAR(p.at(5, 1, 2), 1.0f, 0.02f) << to_string(hider);  // s 0.625 there: bright blue
+  }
+}
+
 // A sphere's s follows its longitude: the texture's left half is on one side of it.
 TEST(TextureRender, ASphereIsTexturedByItsParameters) {
   ScratchDir dir("texture_sphere");

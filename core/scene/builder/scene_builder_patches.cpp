@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,58 @@ std::vector<HomogeneousPoint> control_points(const ParamList& params, const char
 }
 
 // Per-vertex colours would need per-vertex shading data the triangle store does not keep.
+// A "st" (or "s", "t") primvar on a Patch or PatchMesh: constant, or one value per patch corner
+// (varying; vertex too on bilinear meshes, whose corners are their points), bilinear over each
+// patch. The vertices' (u, v) become their (s, t), which the default texture coordinates map as
+// they are (RI TextureCoordinates is not read). Uniform st (one per patch): an error, as a count
+// that does not match.
+void map_patch_st(const PatchMeshDescription& mesh, const ParamList& params, TriangleMeshData& triangles) {
+  const Param* st = params.find("st");
+  const Param* s = st ? nullptr : params.find("s");
+  const Param* t = st ? nullptr : params.find("t");
+  if (!st && !s && !t) return;
+  std::string error;
+  const std::optional<PatchCounts> counts = patch_counts(mesh, error);
+  if (!counts || triangles.uv.size() != triangles.P.size()) return;
+  const int cols = counts->nupatches + (mesh.u_periodic ? 0 : 1), rows = counts->nvpatches + (mesh.v_periodic ? 0 : 1);
+  const size_t corners = varying_count(mesh, *counts);
+  auto check = [&](const Param* p, const char* name, size_t stride) {
+    if (!p) return;
+    const StorageClass c = p->decl.storage;
+    const bool per_corner = c == StorageClass::Varying || c == StorageClass::FaceVarying ||
+                            (mesh.type == PatchType::bilinear && (c == StorageClass::Vertex || c == StorageClass::FaceVertex));
+    if (p->decl.is_string() || p->decl.components() != int(stride))
+      throw RibError(fmt::format("\"{}\" must have {} number{} per value", name, stride, stride == 1 ? "" : "s"));
+    if (c == StorageClass::Constant) {
+      if (p->floats.size() != stride) throw RibError(fmt::format("constant \"{}\" needs {} numbers", name, stride));
+      return;
+    }
+    if (!per_corner)
+      throw RibError(fmt::format("{} \"{}\" is not supported on patches: give one value per patch corner (varying)", to_string(c), name));
+    if (p->floats.size() != corners * stride)
+      throw RibError(fmt::format("\"{}\" needs {} values (one per patch corner), found {} numbers", name, corners, p->floats.size()));
+  };
+  check(st, "st", 2);
+  check(s, "s", 1);
+  check(t, "t", 1);
+  auto value = [&](const Param* p, size_t stride, size_t comp, int i, int j) -> float {
+    if (!p) return 0.0f;
+    if (p->decl.storage == StorageClass::Constant) return p->floats[comp];
+    return p->floats[(size_t(j % rows) * size_t(cols) + size_t(i % cols)) * stride + comp];
+  };
+  for (Vec2f& uv : triangles.uv) {
+    const double fu = std::clamp(double(uv.x), 0.0, 1.0) * counts->nupatches, fv = std::clamp(double(uv.y), 0.0, 1.0) * counts->nvpatches;
+    const int i = std::min(int(fu), counts->nupatches - 1), j = std::min(int(fv), counts->nvpatches - 1);
+    const float a = float(fu - i), b = float(fv - j);
+    auto at = [&](const Param* p, size_t stride, size_t comp) {
+      const float v00 = value(p, stride, comp, i, j), v10 = value(p, stride, comp, i + 1, j);
+      const float v01 = value(p, stride, comp, i, j + 1), v11 = value(p, stride, comp, i + 1, j + 1);
+      return (v00 * (1 - a) + v10 * a) * (1 - b) + (v01 * (1 - a) + v11 * a) * b;
+    };
+    uv = st ? Vec2f{at(st, 2, 0), at(st, 2, 1)} : Vec2f{at(s, 1, 0), at(t, 1, 0)};
+  }
+}
+
 void warn_of_interpolated_colours(const ParamList& params, Diagnostics& diag, const char* request,
                                   const SourceLoc& loc) {
   for (const char* name : {"Cs", "Os"}) {
@@ -96,8 +150,9 @@ void SceneBuilder::add_patch_surface(PatchMeshDescription& mesh, const ParamList
   warn_of_interpolated_colours(params, diag_, request, loc);
   std::string error;
   const std::optional<DicingView> view = dicing_view();
-  const TriangleMeshData triangles = tessellate_patch_mesh(mesh, error, view ? &*view : nullptr);
+  TriangleMeshData triangles = tessellate_patch_mesh(mesh, error, view ? &*view : nullptr);
   if (!error.empty()) throw RibError(error);
+  map_patch_st(mesh, params, triangles);
   add_triangle_mesh(triangles, make_material(loc));
 }
 
