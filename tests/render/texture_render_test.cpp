@@ -102,16 +102,21 @@ TEST(TextureRender, SRunsAcrossTheImageAndTDownItOnPatchesAndPolygons) {
     }
 }
 
+// An 8x8 orthographic view of [-1, 1]^2 from +z (box filter, one sample per pixel) up to a
+// paintedplastic of `texture` under an ambient light of 1: a pixel shows the texel it sees.
+std::string textured_view(const std::string& texture) {
+  return "Format 8 8 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\nProjection \"orthographic\"\nTranslate 0 0 5\nWorldBegin\n"
+         "LightSource \"ambientlight\" 1 \"intensity\" [1]\nSurface \"paintedplastic\" \"texturename\" [\"" +
+         texture + "\"] \"Kd\" [0] \"Ks\" [0]\n";
+}
+
 // Curves read textures by their "st" (or "s", "t") primvars: uniform st gives a strand one texel
 // (a scalp map), vertex st follows the strand. The quadrants texture: (s, t) < (0.5, 0.5) bright
 // red, s > 0.5 bright blue, t > 0.5 the dim halves (0.5).
 TEST(TextureRender, CurvesReadTexturesByTheirStPrimvars) {
   ScratchDir dir("texture_curves");
   const std::string texture = test::write_quadrants_texture(dir);
-  const std::string head =
-      "Format 8 8 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\nProjection \"orthographic\"\nTranslate 0 0 5\nWorldBegin\n"
-      "LightSource \"ambientlight\" 1 \"intensity\" [1]\nSurface \"paintedplastic\" \"texturename\" [\"" +
-      texture + "\"] \"Kd\" [0] \"Ks\" [0]\n";
+  const std::string head = textured_view(texture);
   // Two horizontal strands, y = 0.5 (rows 1, 2) and y = -0.5 (rows 5, 6), one st each.
   const std::string uniform =
       head + "Curves \"linear\" [2 2] \"nonperiodic\" \"P\" [-2 0.5 0  2 0.5 0  -2 -0.5 0  2 -0.5 0] "
@@ -151,10 +156,7 @@ TEST(TextureRender, CurvesReadTexturesByTheirStPrimvars) {
 TEST(TextureRender, APatchsStPrimvarMapsItsCorners) {
   ScratchDir dir("texture_patch_st");
   const std::string texture = test::write_quadrants_texture(dir);
-  const std::string head =
-      "Format 8 8 1\nPixelSamples 1 1\nPixelFilter \"box\" 1 1\nProjection \"orthographic\"\nTranslate 0 0 5\n"
-      "WorldBegin\nLightSource \"ambientlight\" 1 \"intensity\" [1]\nSurface \"paintedplastic\" \"texturename\" [\"" +
-      texture + "\"] \"Kd\" [0] \"Ks\" [0]\n";
+  const std::string head = textured_view(texture);
   const std::string mirrored = head + "Patch \"bilinear\" \"P\" [-1 1 0  1 1 0  -1 -1 0  1 -1 0] "
                                       "\"varying float[2] st\" [1 0  0 0  1 1  0 1]\nWorldEnd\n";
   // Two patches side by side (u runs over both): s runs from 0.5 to 1 over the left one (blue) and
