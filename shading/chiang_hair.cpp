@@ -235,7 +235,7 @@ HairSample ChiangHair::sample(const Vec3f& T, const Vec3f& wo, float h, const st
 }
 
 HairSample ChiangHair::sample_at(const Frame& f, const Vec3f& sigma_a, float sin_g, float cos_g,
-                                 const std::array<float, 4>& u) const {
+                                 const std::array<float, 4>& u, bool evaluate) const {
   const Vec3f& T = f.T;
   const WidthTerms w = width_terms(p_, sigma_a, f.sin_o, f.cos_o, sin_g, cos_g);
   const std::array<float, 4> lobe_p = lobe_pdf(w.A);
@@ -258,6 +258,7 @@ HairSample ChiangHair::sample_at(const Frame& f, const Vec3f& sigma_a, float sin
   const float cos_i = safe_sqrt(1 - sin_i * sin_i);
   const float dphi = p < 3 ? w.phi(p) + sample_trimmed_logistic(u[3], s_) : 2 * kPi * u[3];
   out.wi = normalize(T * sin_i + (f.Y * std::cos(dphi) + f.Z * std::sin(dphi)) * cos_i);
+  if (!evaluate) return out;
   // The density of the mixture at wi, and S there.
   const float phi = std::atan2(dot(out.wi, f.Z), dot(out.wi, f.Y));
   const float sin_w = std::clamp(dot(out.wi, T), -1.0f, 1.0f), cos_w = safe_sqrt(1 - sin_w * sin_w);
@@ -283,7 +284,7 @@ HairSample ChiangHair::sample_across(const Vec3f& T, const Vec3f& wo, const Vec3
   for (; j + 1 < width_weight_.size() && u[0] >= below + width_weight_[j]; ++j) below += width_weight_[j];
   std::array<float, 4> v = u;
   v[0] = std::clamp((u[0] - below) / width_weight_[j], 0.0f, 0.99999994f);
-  HairSample out = sample_at(f, sigma_a, width_sin_[j], width_cos_[j], v);
+  HairSample out = sample_at(f, sigma_a, width_sin_[j], width_cos_[j], v, false);
   const Across a = evaluate_across(f, out.wi, sigma_a);
   out.S = a.S;
   out.pdf = a.pdf > 0 && std::isfinite(a.pdf) ? a.pdf : 0.0f;

@@ -94,8 +94,10 @@ class ChiangHair {
  private:
   struct Frame;
   Frame frame(const Vec3f& T, const Vec3f& wo) const;
-  // sample() at the entry point of sine sin_g (cosine cos_g), absorption sigma_a.
-  HairSample sample_at(const Frame& f, const Vec3f& sigma_a, float sin_g, float cos_g, const std::array<float, 4>& u) const;
+  // sample() at the entry point of sine sin_g (cosine cos_g), absorption sigma_a; without
+  // `evaluate` only the direction and lobe (sample_across evaluates over the whole width).
+  HairSample sample_at(const Frame& f, const Vec3f& sigma_a, float sin_g, float cos_g, const std::array<float, 4>& u,
+                       bool evaluate = true) const;
   Across evaluate_across(const Frame& f, const Vec3f& wi, const Vec3f& sigma_a) const;
   // The longitudinal lobes M_p(theta_i) of the four lobes.
   std::array<float, 4> longitudinal(const Frame& f, float sin_theta_i, float cos_theta_i) const;
