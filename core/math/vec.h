@@ -89,6 +89,7 @@ using Vec3d = Vec3T<double>;
 
 struct Vec2f {
   float x = 0, y = 0;
+  bool operator==(const Vec2f&) const = default;
 };
 
 }  // namespace darc

@@ -84,6 +84,10 @@ Interaction point_interaction(const PointSet& points, uint32_t local, const Ray&
   it.N = -normalize(ray.d);
   it.Cs = points.color(local);
   it.Os = points.opacity(local);
+  // One texel per point: its st, looked up with no footprint (the disc faces the ray, it has no
+  // parameters to spread a footprint over).
+  it.st.s = points.texture_coordinates(local).x;
+  it.st.t = points.texture_coordinates(local).y;
   if (!footprint) return it;
   const Vec3f ax = transfer(footprint->axis_x(it.t), ray.d, it.N);
   const Vec3f ay = transfer(footprint->axis_y(it.t), ray.d, it.N);

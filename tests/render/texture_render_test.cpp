@@ -178,6 +178,88 @@ TEST(TextureRender, APatchsStPrimvarMapsItsCorners) {
   }
 }
 
+// A NuPatch's "st": varying (one value per segment corner) mirrors a bilinear NuPatch as the
+// Patch test does, and vertex st (one per control point) the same; over two segments in u the
+// values hold per segment corner, as on the PatchMesh.
+TEST(TextureRender, ANuPatchsStPrimvarMapsItsSegmentCorners) {
+  ScratchDir dir("texture_nupatch_st");
+  const std::string texture = test::write_quadrants_texture(dir);
+  const std::string head = textured_view(texture);
+  const std::string square = "NuPatch 2 2 [0 0 1 1] 0 1 2 2 [0 0 1 1] 0 1 \"P\" [-1 1 0  1 1 0  -1 -1 0  1 -1 0] ";
+  const std::string varying = head + square + "\"varying float[2] st\" [1 0  0 0  1 1  0 1]\nWorldEnd\n";
+  const std::string vertex = head + square + "\"vertex float[2] st\" [1 0  0 0  1 1  0 1]\nWorldEnd\n";
+  const std::string segments = head + "NuPatch 3 2 [0 0 0.5 1 1] 0 1 2 2 [0 0 1 1] 0 1 "
+                                      "\"P\" [-1 1 0  0 1 0  1 1 0  -1 -1 0  0 -1 0  1 -1 0] "
+                                      "\"varying float s\" [0.5 1 0  0.5 1 0] \"varying float t\" [0 0 0  1 1 1]\nWorldEnd\n";
+  for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
+    for (const std::string* rib : {&varying, &vertex}) {
+      const Image m = render_image(*rib, hider);
+      EXPECT_NEAR(m.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // top left: bright blue
+      EXPECT_NEAR(m.at(1, 1, 0), 0.0f, 0.02f) << to_string(hider);
+      EXPECT_NEAR(m.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // top right: bright red
+      EXPECT_NEAR(m.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // bottom right: dim red
+    }
+    const Image p = render_image(segments, hider);
+    EXPECT_NEAR(p.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // left segment, top: bright blue
+    EXPECT_NEAR(p.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // right segment, top (s 0.375): bright red
+    EXPECT_NEAR(p.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // right segment, bottom: dim red
+    EXPECT_NEAR(p.at(5, 1, 2), 1.0f, 0.02f) << to_string(hider);  // s 0.625 there: bright blue
+  }
+}
+
+// Points read "st" (or "s", "t") per point or shared: each point is one texel.
+TEST(TextureRender, PointsReadOneTexelEach) {
+  ScratchDir dir("texture_points_st");
+  const std::string texture = test::write_quadrants_texture(dir);
+  const std::string head = textured_view(texture) + "Points \"P\" [-0.5 0.5 0  0.5 0.5 0  -0.5 -0.5 0  0.5 -0.5 0] "
+                                                    "\"constantwidth\" [0.9] ";
+  const std::string per_point = head + "\"vertex float[2] st\" [0.75 0.25  0.25 0.25  0.75 0.75  0.25 0.75]\nWorldEnd\n";
+  const std::string shared = head + "\"constant float s\" [0.75] \"constant float t\" [0.75]\nWorldEnd\n";
+  for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
+    const Image p = render_image(per_point, hider);
+    EXPECT_NEAR(p.at(2, 2, 2), 1.0f, 0.02f) << to_string(hider);  // top left: bright blue
+    EXPECT_NEAR(p.at(5, 2, 0), 1.0f, 0.02f) << to_string(hider);  // top right: bright red
+    EXPECT_NEAR(p.at(2, 5, 2), 0.5f, 0.02f) << to_string(hider);  // bottom left: dim blue
+    EXPECT_NEAR(p.at(5, 5, 0), 0.5f, 0.02f) << to_string(hider);  // bottom right: dim red
+    EXPECT_NEAR(p.at(5, 5, 2), 0.0f, 0.02f) << to_string(hider);
+    const Image c = render_image(shared, hider);
+    for (auto [x, y] : {std::pair{2, 2}, {5, 2}, {2, 5}, {5, 5}}) {
+      EXPECT_NEAR(c.at(x, y, 2), 0.5f, 0.02f) << to_string(hider);  // dim blue everywhere
+      EXPECT_NEAR(c.at(x, y, 0), 0.0f, 0.02f) << to_string(hider);
+    }
+  }
+}
+
+// A subdivision mesh reads "st" of every class: facevarying and vertex st mirror a square (a
+// quad with its boundary interpolated: a bilinear patch, whose st is bilinear too), uniform st
+// gives each face one texel.
+TEST(TextureRender, ASubdivisionMeshReadsItsSt) {
+  ScratchDir dir("texture_subdivision_st");
+  const std::string texture = test::write_quadrants_texture(dir);
+  const std::string head = textured_view(texture) + "SubdivisionMesh \"catmull-clark\" ";
+  const std::string quad = "[4] [0 1 3 2] [\"interpolateboundary\"] [0 0] [] [] \"P\" [-1 1 0  1 1 0  -1 -1 0  1 -1 0] ";
+  const std::string facevarying = head + quad + "\"facevarying float[2] st\" [1 0  0 0  0 1  1 1]\nWorldEnd\n";
+  const std::string vertex = head + quad + "\"vertex float s\" [1 0 1 0] \"vertex float t\" [0 0 1 1]\nWorldEnd\n";
+  const std::string uniform = head + "[4 4] [0 1 4 3  1 2 5 4] [\"interpolateboundary\"] [0 0] [] [] "
+                                     "\"P\" [-1 1 0  0 1 0  1 1 0  -1 -1 0  0 -1 0  1 -1 0] "
+                                     "\"uniform float[2] st\" [0.25 0.75  0.75 0.25]\nWorldEnd\n";
+  for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
+    for (const std::string* rib : {&facevarying, &vertex}) {
+      const Image m = render_image(*rib, hider);
+      EXPECT_NEAR(m.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // top left: bright blue
+      EXPECT_NEAR(m.at(1, 1, 0), 0.0f, 0.02f) << to_string(hider);
+      EXPECT_NEAR(m.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // top right: bright red
+      EXPECT_NEAR(m.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // bottom right: dim red
+      EXPECT_NEAR(m.at(1, 6, 2), 0.5f, 0.02f) << to_string(hider);  // bottom left: dim blue
+    }
+    const Image u = render_image(uniform, hider);
+    for (int y : {1, 6}) {
+      EXPECT_NEAR(u.at(1, y, 0), 0.5f, 0.02f) << to_string(hider);  // left face: (0.25, 0.75), dim red
+      EXPECT_NEAR(u.at(6, y, 2), 1.0f, 0.02f) << to_string(hider);  // right face: (0.75, 0.25), bright blue
+    }
+  }
+}
+
 // A sphere's s follows its longitude: the texture's left half is on one side of it.
 TEST(TextureRender, ASphereIsTexturedByItsParameters) {
   ScratchDir dir("texture_sphere");

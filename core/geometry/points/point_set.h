@@ -19,10 +19,11 @@
 
 namespace darc {
 
-// A point's colour (Cs) and opacity (Os).
+// A point's colour (Cs), opacity (Os) and texture coordinates (st: a point is one texel).
 struct PointShading {
   Vec3f cs{1, 1, 1};
   Vec3f os{1, 1, 1};
+  Vec2f st{};
   bool operator==(const PointShading&) const = default;
 };
 
@@ -64,6 +65,7 @@ struct PointSet {
   BBox bounds(size_t i) const;
   const Vec3f& color(size_t i) const { return shading[shading_index[i]].cs; }
   const Vec3f& opacity(size_t i) const { return shading[shading_index[i]].os; }
+  const Vec2f& texture_coordinates(size_t i) const { return shading[shading_index[i]].st; }
 
   // Appends one point; its shading shares the previous point's entry when equal.
   void add(const Vec3f& centre, float radius, uint32_t material, const PointShading& shading = {});

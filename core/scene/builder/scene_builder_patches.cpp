@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -107,6 +108,96 @@ void map_patch_st(const PatchMeshDescription& mesh, const ParamList& params, Tri
   }
 }
 
+// The varying value at parameter x of a NURBS direction: RI gives one per segment boundary,
+// knots[order - 1 + i] for i = 0 .. n - order + 1, linear in the parameter between them. A
+// zero-length segment (repeated knot) is skipped: the first segment that holds x with a length
+// decides.
+double nurbs_varying(const NurbsDirection& d, double x, const std::function<double(int)>& value_at) {
+  const int segments = d.n - d.order + 1;
+  for (int i = 0; i < segments; ++i) {
+    const double a = d.knots[size_t(d.order - 1 + i)], b = d.knots[size_t(d.order + i)];
+    if (b > a && x <= b) {
+      const double f = std::clamp((x - a) / (b - a), 0.0, 1.0);
+      return value_at(i) * (1.0 - f) + value_at(i + 1) * f;
+    }
+  }
+  return value_at(segments);
+}
+
+// A "st" (or "s", "t") primvar on a NuPatch: constant; varying, one value per segment corner
+// ((nu - uorder + 2) x (nv - vorder + 2)), bilinear in the parameters over each segment; or
+// vertex, one per control point, interpolated by the surface's own basis and weights (as P).
+// Uniform st (one per segment) is an error, as on patches: the tessellation's vertices are
+// shared between segments.
+void map_nurbs_st(const NurbsSurfaceDescription& surface, const ParamList& params, TriangleMeshData& triangles) {
+  const Param* st = params.find("st");
+  const Param* s = st ? nullptr : params.find("s");
+  const Param* t = st ? nullptr : params.find("t");
+  if (!st && !s && !t) return;
+  if (triangles.uv.size() != triangles.P.size()) return;
+  const int ucorners = surface.u.n - surface.u.order + 2, vcorners = surface.v.n - surface.v.order + 2;
+  auto check = [&](const Param* p, const char* name, size_t stride) {
+    if (!p) return;
+    if (p->decl.is_string() || p->decl.components() != int(stride))
+      throw RibError(fmt::format("\"{}\" must have {} number{} per value", name, stride, stride == 1 ? "" : "s"));
+    size_t expected = 0;
+    switch (p->decl.storage) {
+      case StorageClass::Constant: expected = 1; break;
+      case StorageClass::Varying:
+      case StorageClass::FaceVarying: expected = size_t(ucorners) * size_t(vcorners); break;
+      case StorageClass::Vertex:
+      case StorageClass::FaceVertex: expected = size_t(surface.u.n) * size_t(surface.v.n); break;
+      case StorageClass::Uniform:
+        throw RibError(fmt::format("uniform \"{}\" is not supported on NuPatch: give one value per segment corner "
+                                   "(varying) or per control point (vertex)", name));
+    }
+    if (p->floats.size() != expected * stride)
+      throw RibError(fmt::format("{} \"{}\" needs {} values, found {} numbers", to_string(p->decl.storage), name,
+                                 expected, p->floats.size()));
+  };
+  check(st, "st", 2);
+  check(s, "s", 1);
+  check(t, "t", 1);
+  // Vertex values as a scalar NURBS of the surface's basis and weights, (value, 0, 0) per
+  // control point: rational like P. Built once per component.
+  auto scalar_surface = [&](const Param* p, size_t stride, size_t comp) {
+    NurbsSurfaceDescription scalar{surface.u, surface.v, {}};
+    if (!p || (p->decl.storage != StorageClass::Vertex && p->decl.storage != StorageClass::FaceVertex)) return scalar;
+    scalar.points.reserve(surface.points.size());
+    for (size_t k = 0; k < surface.points.size(); ++k) {
+      const double w = surface.points[k].w;
+      scalar.points.push_back({{double(p->floats[k * stride + comp]) * w, 0.0, 0.0}, w});
+    }
+    return scalar;
+  };
+  const NurbsSurfaceDescription first = st ? scalar_surface(st, 2, 0) : scalar_surface(s, 1, 0);
+  const NurbsSurfaceDescription second = st ? scalar_surface(st, 2, 1) : scalar_surface(t, 1, 0);
+  // Component `comp` of p at parameters (u, v); `vertex_values` its scalar surface.
+  auto value = [&](const Param* p, size_t stride, size_t comp, const NurbsSurfaceDescription& vertex_values, double u,
+                   double v) -> double {
+    if (!p) return 0.0;
+    switch (p->decl.storage) {
+      case StorageClass::Constant:
+      case StorageClass::Uniform: return p->floats[comp];
+      case StorageClass::Varying:
+      case StorageClass::FaceVarying: {
+        auto at = [&](int i, int j) { return double(p->floats[(size_t(j) * size_t(ucorners) + size_t(i)) * stride + comp]); };
+        return nurbs_varying(surface.v, v, [&](int j) {
+          return nurbs_varying(surface.u, u, [&](int i) { return at(i, j); });
+        });
+      }
+      case StorageClass::Vertex:
+      case StorageClass::FaceVertex: break;
+    }
+    return evaluate_nurbs(vertex_values, u, v).P.x;
+  };
+  for (Vec2f& uv : triangles.uv) {
+    const double u = uv.x, v = uv.y;
+    uv = st ? Vec2f{float(value(st, 2, 0, first, u, v)), float(value(st, 2, 1, second, u, v))}
+            : Vec2f{float(value(s, 1, 0, first, u, v)), float(value(t, 1, 0, second, u, v))};
+  }
+}
+
 void warn_of_interpolated_colours(const ParamList& params, Diagnostics& diag, const char* request,
                                   const SourceLoc& loc) {
   for (const char* name : {"Cs", "Os"}) {
@@ -174,8 +265,9 @@ void SceneBuilder::add_nu_patch(const PrimitiveRequest& r, const ParamList& para
   warn_of_interpolated_colours(params, diag_, "NuPatch", loc);
   std::string error;
   const std::optional<DicingView> view = dicing_view();
-  const TriangleMeshData triangles = tessellate_nurbs(s, error, view ? &*view : nullptr);
+  TriangleMeshData triangles = tessellate_nurbs(s, error, view ? &*view : nullptr);
   if (!error.empty()) throw RibError(error);
+  map_nurbs_st(s, params, triangles);
   add_triangle_mesh(triangles, make_material(loc));
 }
 

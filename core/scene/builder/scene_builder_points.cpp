@@ -1,5 +1,6 @@
 // SceneBuilder's Points request (RI spec 3.2 §5.6): discs of diameter "width" (per point, varying
-// or vertex), else "constantwidth", else 1, facing the ray, with per-point or shared Cs and Os.
+// or vertex), else "constantwidth", else 1, facing the ray, with per-point or shared Cs, Os and
+// st (or s, t: a point is one texel).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -91,6 +92,10 @@ void SceneBuilder::add_points(const PrimitiveRequest&, const ParamList& params, 
     throw RibError("\"constantwidth\" is one width for all points: declare it constant or uniform");
   const std::optional<PointPrimvar> cs = point_primvar(params, "Cs", 3, count);
   const std::optional<PointPrimvar> os = point_primvar(params, "Os", 3, count);
+  // "st", else "s" and "t" apart (param null: absent).
+  const PointPrimvar st = point_primvar(params, "st", 2, count).value_or(PointPrimvar{});
+  const PointPrimvar s = st.param ? PointPrimvar{} : point_primvar(params, "s", 1, count).value_or(PointPrimvar{});
+  const PointPrimvar t = st.param ? PointPrimvar{} : point_primvar(params, "t", 1, count).value_or(PointPrimvar{});
   if (cs) check_finite(cs->param->floats, "Cs");
   if (count == 0) return;
   // A point costs less than a curve segment (24 bytes against 81) with the same share of the BVH
@@ -124,6 +129,9 @@ void SceneBuilder::add_points(const PrimitiveRequest&, const ParamList& params, 
       const float* c = cs->value(i);
       shading.cs = {c[0], c[1], c[2]};
     }
+    if (st.param && (st.per_point || i == 0)) shading.st = {st.value(i)[0], st.value(i)[1]};
+    if (s.param && (s.per_point || i == 0)) shading.st.x = *s.value(i);
+    if (t.param && (t.per_point || i == 0)) shading.st.y = *t.value(i);
     if (os && (os->per_point || i == 0)) {
       const float* o = os->value(i);
       shading.os = {opacity_clamps.apply(o[0], 0, 1, i, 0), opacity_clamps.apply(o[1], 0, 1, i, 1),

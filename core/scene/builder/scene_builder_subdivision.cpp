@@ -1,7 +1,8 @@
 // SceneBuilder's SubdivisionMesh: the request's arrays are checked and tessellated once, here,
 // as the scene is built (core/geometry/surfaces/subdivision/subdivision_surface.h), and the limit triangles join the scene's
 // triangle store. Constant and uniform "Cs" / "Os" give the faces their colour and opacity (one
-// material per distinct pair); other primitive variables are not used, with one warning each.
+// material per distinct pair); "st" (or "s", "t") of any class gives the texture coordinates;
+// other primitive variables are not used, with one warning each.
 #include <fmt/format.h>
 
 #include <array>
@@ -73,9 +74,74 @@ std::optional<std::vector<Vec3f>> face_values(const ParamList& params, const cha
   return std::nullopt;
 }
 
+// "st" (or "s" and "t") into the request: vertex class (every given one) subdivided like P, any
+// other class written per face corner and subdivided linearly inside each face (constant: one
+// value; uniform: one per face; varying: one per vertex; facevarying / facevertex: one per
+// corner). A missing "s" or "t" is 0. Counts that do not match the mesh are errors.
+void read_texture_coordinates(const ParamList& params, SubdivisionMeshRequest& m) {
+  const Param* st = params.find("st");
+  const Param* s = st ? nullptr : params.find("s");
+  const Param* t = st ? nullptr : params.find("t");
+  if (!st && !s && !t) return;
+  const size_t faces = m.nvertices.size(), vertices = m.P.size(), corners = m.vertices.size();
+  auto check = [&](const Param* p, const char* name, size_t stride) {
+    if (!p) return;
+    if (p->decl.is_string() || p->decl.components() != int(stride))
+      throw RibError(fmt::format("\"{}\" must have {} number{} per value, declared as {}", name, stride,
+                                 stride == 1 ? "" : "s", to_string(p->decl)));
+    size_t expected = 0;
+    const char* per = "";
+    switch (p->decl.storage) {
+      case StorageClass::Constant: expected = 1, per = "constant"; break;
+      case StorageClass::Uniform: expected = faces, per = "one per face"; break;
+      case StorageClass::Vertex:
+      case StorageClass::Varying: expected = vertices, per = "one per vertex"; break;
+      case StorageClass::FaceVarying:
+      case StorageClass::FaceVertex: expected = corners, per = "one per face corner"; break;
+    }
+    if (p->floats.size() != expected * stride)
+      throw RibError(fmt::format("\"{}\" ({}) needs {} value{} ({}), found {} numbers", name, to_string(p->decl.storage),
+                                 expected, expected == 1 ? "" : "s", per, p->floats.size()));
+  };
+  check(st, "st", 2);
+  check(s, "s", 1);
+  check(t, "t", 1);
+  // The value of component `comp` of p at corner c of face f, on vertex v.
+  auto value = [](const Param* p, size_t stride, size_t comp, size_t f, size_t c, size_t v) -> float {
+    if (!p) return 0.0f;
+    switch (p->decl.storage) {
+      case StorageClass::Constant: return p->floats[comp];
+      case StorageClass::Uniform: return p->floats[f * stride + comp];
+      case StorageClass::Vertex:
+      case StorageClass::Varying: return p->floats[v * stride + comp];
+      case StorageClass::FaceVarying:
+      case StorageClass::FaceVertex: break;
+    }
+    return p->floats[c * stride + comp];
+  };
+  auto at = [&](size_t f, size_t c, size_t v) {
+    return st ? Vec2f{value(st, 2, 0, f, c, v), value(st, 2, 1, f, c, v)}
+              : Vec2f{value(s, 1, 0, f, c, v), value(t, 1, 0, f, c, v)};
+  };
+  auto is_vertex = [](const Param* p) { return !p || p->decl.storage == StorageClass::Vertex; };
+  if (is_vertex(st) && is_vertex(s) && is_vertex(t)) {
+    for (size_t v = 0; v < vertices; ++v) m.vertex_st.push_back(at(0, 0, v));
+    return;
+  }
+  // Face sizes and indices are checked when the mesh is tessellated; reading stops short of them.
+  size_t c = 0;
+  for (size_t f = 0; f < faces; ++f) {
+    for (int k = 0; k < m.nvertices[f] && c < corners; ++k, ++c) {
+      const int v = m.vertices[c];
+      m.corner_st.push_back(at(f, c, v >= 0 && size_t(v) < vertices ? size_t(v) : 0));
+    }
+  }
+}
+
 void warn_unused_parameters(const ParamList& params, Diagnostics& diag, const SourceLoc& loc) {
   for (const Param& p : params.params) {
-    if (p.name == "P" || p.name == "Cs" || p.name == "Os") continue;
+    if (p.name == "P" || p.name == "Cs" || p.name == "Os" || p.name == "st" || p.name == "s" || p.name == "t")
+      continue;
     diag.warning_once("SubdivisionMesh parameter " + p.name, loc, kRequest,
                       fmt::format("\"{}\" is not used on a subdivision surface: ignored", p.name));
   }
@@ -103,7 +169,8 @@ TriangleMeshData select_triangles(const TriangleMeshData& mesh, const std::vecto
 }  // namespace
 
 void SceneBuilder::add_subdivision_mesh(const PrimitiveRequest& r, const ParamList& params, const SourceLoc& loc) {
-  const SubdivisionMeshRequest request = mesh_request(r, params);
+  SubdivisionMeshRequest request = mesh_request(r, params);
+  read_texture_coordinates(params, request);
   const size_t face_count = request.nvertices.size();
   // Read before tessellating, so that a bad primitive variable fails the request cheaply.
   std::optional<std::vector<Vec3f>> colours = face_values(params, "Cs", face_count, diag_, loc);

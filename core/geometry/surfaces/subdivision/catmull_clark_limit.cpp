@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <unordered_map>
 
 namespace darc {
 
@@ -25,7 +26,7 @@ int sharp_edge_count(const SubdivisionLevel& level, const std::vector<uint32_t>&
   return count;
 }
 
-Vec3d smooth_limit_position(const SubdivisionLevel& level, uint32_t v) {
+Vec3d smooth_limit_position(const SubdivisionLevel& level, const std::vector<Vec3d>& x, uint32_t v) {
   const SubdivisionTopology& t = level.topology;
   uint32_t begin = t.vertex_corner_starts[v], end = t.vertex_corner_starts[v + 1];
   double n = double(end - begin);
@@ -33,10 +34,25 @@ Vec3d smooth_limit_position(const SubdivisionLevel& level, uint32_t v) {
   for (uint32_t i = begin; i < end; ++i) {
     uint32_t c = t.vertex_corners[i];
     uint32_t next = t.next_corner(c);
-    edge_sum += level.points[t.corner_vertex[next]];
-    face_sum += level.points[t.corner_vertex[t.next_corner(next)]];
+    edge_sum += x[t.corner_vertex[next]];
+    face_sum += x[t.corner_vertex[t.next_corner(next)]];
   }
-  return (level.points[v] * (n * n) + edge_sum * 4.0 + face_sum) / (n * (n + 5.0));
+  return (x[v] * (n * n) + edge_sum * 4.0 + face_sum) / (n * (n + 5.0));
+}
+
+// The limit of a quantity x given per vertex and subdivided by the level's rules (positions, or
+// vertex-class texture coordinates) at vertex v, which moves by `rule`.
+Vec3d limit_value(const SubdivisionLevel& level, const std::vector<Vec3d>& x, uint32_t v, VertexRule rule,
+                  const uint32_t far_end[2]) {
+  switch (rule) {
+    case VertexRule::Corner:
+      return x[v];
+    case VertexRule::Crease:
+      return (x[far_end[0]] + x[v] * 4.0 + x[far_end[1]]) / 6.0;
+    case VertexRule::Smooth:
+      break;
+  }
+  return smooth_limit_position(level, x, v);
 }
 
 // The limit normal of a smooth (interior) vertex from the two tangent masks; it points the way
@@ -101,6 +117,7 @@ void append_limit_triangles(const SubdivisionLevel& level, TriangleMeshData& mes
   const uint32_t nv = t.vertex_count;
   std::vector<LimitVertex> vertices(nv);
   std::vector<Vec3d> limit(nv);
+  std::vector<Vec3d> limit_st(level.vertex_st.empty() ? 0 : nv);
   std::vector<uint32_t> corner_sector(t.corner_vertex.size(), 0);
   std::vector<uint32_t> edges;
   uint32_t slot_count = 0;
@@ -110,37 +127,51 @@ void append_limit_triangles(const SubdivisionLevel& level, TriangleMeshData& mes
     uint32_t far_end[2] = {0, 0};
     lv.rule = vertex_rule(sharp_edge_count(level, edges, far_end, v), level.vertex_sharpness[v]);
     if (edges.empty()) lv.rule = VertexRule::Corner;  // a vertex no face uses
-    switch (lv.rule) {
-      case VertexRule::Corner:
-        limit[v] = level.points[v];
-        break;
-      case VertexRule::Crease:
-        limit[v] = (level.points[far_end[0]] + level.points[v] * 4.0 + level.points[far_end[1]]) / 6.0;
-        break;
-      case VertexRule::Smooth:
-        limit[v] = smooth_limit_position(level, v);
-        break;
-    }
+    limit[v] = limit_value(level, level.points, v, lv.rule, far_end);
+    if (!limit_st.empty()) limit_st[v] = limit_value(level, level.vertex_st, v, lv.rule, far_end);
     lv.sector_count = lv.rule == VertexRule::Smooth ? 1 : assign_sectors(level, v, corner_sector);
     lv.first_output_slot = slot_count;
     slot_count += lv.sector_count;
   }
 
+  // The texture coordinates of corner c: per-corner values are their own limit (they are
+  // refined linearly).
+  const bool has_st = !limit_st.empty() || !level.corner_st.empty();
+  auto corner_st = [&](uint32_t c) {
+    const Vec3d st = level.corner_st.empty() ? limit_st[t.corner_vertex[c]] : level.corner_st[c];
+    return Vec2f{float(st.x), float(st.y)};
+  };
   std::vector<uint32_t> slots(slot_count, UINT32_MAX);
+  // Where per-corner texture coordinates differ between the corners of one slot (a seam of the
+  // st map), the slot's vertex is emitted once per distinct value: the slot keeps the first,
+  // seam_copies the others.
+  std::unordered_multimap<uint32_t, uint32_t> seam_copies;
   auto emitted_vertex = [&](uint32_t c) {
     uint32_t v = t.corner_vertex[c];
-    uint32_t& slot = slots[vertices[v].first_output_slot + corner_sector[c]];
-    if (slot != UINT32_MAX) return slot;
+    const uint32_t slot_index = vertices[v].first_output_slot + corner_sector[c];
+    uint32_t& slot = slots[slot_index];
+    const Vec2f st = has_st ? corner_st(c) : Vec2f{};
+    auto same_st = [&](uint32_t emitted) { return mesh.uv[emitted].x == st.x && mesh.uv[emitted].y == st.y; };
+    if (slot != UINT32_MAX) {
+      if (!has_st || same_st(slot)) return slot;
+      const auto [first, last] = seam_copies.equal_range(slot_index);
+      for (auto it = first; it != last; ++it) {
+        if (same_st(it->second)) return it->second;
+      }
+    }
     Vec3d normal = vertices[v].rule == VertexRule::Smooth ? smooth_limit_normal(level, v)
                                                           : sector_normal(t, limit, v, corner_sector[c], corner_sector);
     // A degenerate neighbourhood (coincident control points) has no tangent plane from the
     // masks; the faces' normal, then +z, keep N a unit vector.
     if (length_squared(normal) == 0.0) normal = sector_normal(t, limit, v, corner_sector[c], corner_sector);
     if (length_squared(normal) == 0.0) normal = {0, 0, 1};
-    slot = uint32_t(mesh.P.size());
+    const uint32_t emitted = uint32_t(mesh.P.size());
     mesh.P.push_back(Vec3f(limit[v]));
     mesh.N.push_back(Vec3f(normalize(normal)));
-    return slot;
+    if (has_st) mesh.uv.push_back(st);
+    if (slot == UINT32_MAX) slot = emitted;
+    else seam_copies.emplace(slot_index, emitted);
+    return emitted;
   };
 
   for (uint32_t f = 0; f < t.face_count(); ++f) {

@@ -24,7 +24,9 @@
 
 namespace darc {
 
-// level: a mesh of quads only (refined at least once). Appends to mesh (P, N) two triangles per
+// level: a mesh of quads only (refined at least once). Appends to mesh (P, N, and uv when the
+// level has texture coordinates: a vertex on a seam of a per-corner st map is emitted once per
+// value) two triangles per
 // face that is not hidden, quad (a, b, c, d) as (a, b, c) and (a, c, d) so that they wind as the
 // face does, and the control face of each triangle to triangle_control_face.
 void append_limit_triangles(const SubdivisionLevel& level, TriangleMeshData& mesh,

@@ -26,6 +26,12 @@ struct SubdivisionLevel {
   // faces, and faces on a boundary that is not interpolated). Children inherit it.
   std::vector<uint8_t> face_hidden;
   std::vector<uint32_t> face_control_face;  // the control face each face descends from
+  // Texture coordinates (s, t, 0), when the mesh has them: either per vertex, subdivided by the
+  // same rules as the points (RI "vertex" class), or per corner (face by face, as the topology
+  // numbers corners), subdivided linearly inside each face (RI "varying", "facevarying",
+  // "uniform" and "constant" classes, all written per corner). At most one is not empty.
+  std::vector<Vec3d> vertex_st;
+  std::vector<Vec3d> corner_st;
 };
 
 // The sharpness an edge or vertex of sharpness s has one level finer.

@@ -56,6 +56,8 @@ bool make_control_level(const SubdivisionMeshRequest& r, SubdivisionTopology top
   const uint32_t nv = topology.vertex_count, nf = topology.face_count();
   level.points.reserve(nv);
   for (const Vec3f& p : r.P) level.points.push_back(Vec3d(p));
+  for (const Vec2f& st : r.vertex_st) level.vertex_st.push_back({st.x, st.y, 0.0});
+  for (const Vec2f& st : r.corner_st) level.corner_st.push_back({st.x, st.y, 0.0});
   level.edge_sharpness.assign(topology.edge_count(), 0.0f);
   level.vertex_sharpness.assign(nv, 0.0f);
   level.face_hidden.assign(nf, 0);
@@ -94,17 +96,33 @@ bool make_control_level(const SubdivisionMeshRequest& r, SubdivisionTopology top
   return std::find(level.face_hidden.begin(), level.face_hidden.end(), 0) != level.face_hidden.end();
 }
 
-// "bilinear": the control faces themselves, fanned around their first vertex, flat shaded.
+// "bilinear": the control faces themselves, fanned around their first vertex, flat shaded. With
+// per-corner texture coordinates each face gets its own vertices (a face's st need not match its
+// neighbour's at a shared vertex).
 void append_control_faces(const SubdivisionLevel& level, SubdivisionTessellation& out) {
   const SubdivisionTopology& t = level.topology;
-  for (const Vec3d& p : level.points) out.mesh.P.push_back(Vec3f(p));
+  const bool per_corner = !level.corner_st.empty();
+  auto st = [](const Vec3d& v) { return Vec2f{float(v.x), float(v.y)}; };
+  if (!per_corner) {
+    for (const Vec3d& p : level.points) out.mesh.P.push_back(Vec3f(p));
+    for (const Vec3d& v : level.vertex_st) out.mesh.uv.push_back(st(v));
+  }
   for (uint32_t f = 0; f < t.face_count(); ++f) {
     if (level.face_hidden[f]) continue;
     uint32_t c0 = t.face_starts[f];
+    auto vertex = [&](uint32_t c) {
+      if (!per_corner) return t.corner_vertex[c];
+      out.mesh.P.push_back(Vec3f(level.points[t.corner_vertex[c]]));
+      out.mesh.uv.push_back(st(level.corner_st[c]));
+      return uint32_t(out.mesh.P.size() - 1);
+    };
+    const uint32_t first = vertex(c0);
+    uint32_t previous = vertex(c0 + 1);
     for (uint32_t c = c0 + 1; c + 1 < t.face_starts[f + 1]; ++c) {
-      out.mesh.indices.insert(out.mesh.indices.end(),
-                              {t.corner_vertex[c0], t.corner_vertex[c], t.corner_vertex[c + 1]});
+      const uint32_t next = vertex(c + 1);
+      out.mesh.indices.insert(out.mesh.indices.end(), {first, previous, next});
       out.triangle_control_face.push_back(f);
+      previous = next;
     }
   }
 }

@@ -43,6 +43,11 @@ struct SubdivisionMeshRequest {
   std::vector<float> floatargs;
   std::vector<std::string> stringargs;
   std::vector<Vec3f> P;
+  // Texture coordinates (s, t), at most one of the two: per vertex (RI "vertex" class,
+  // subdivided like P) or per face corner in face order (every other class, written per corner
+  // by the caller: subdivided linearly inside each face). The tessellation's uv are then (s, t).
+  std::vector<Vec2f> vertex_st;
+  std::vector<Vec2f> corner_st;
 };
 
 // The limit surface emits at most this many triangles per mesh: levels are dropped (down to one)

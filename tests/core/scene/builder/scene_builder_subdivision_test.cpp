@@ -59,12 +59,12 @@ TEST(SceneBuilderSubdivision, UniformColourGivesOneMaterialPerDistinctValue) {
 TEST(SceneBuilderSubdivision, VaryingColourAndOtherVariablesWarnOnce) {
   const std::string mesh = kCube + " " + kCubeP +
                            " \"vertex color Cs\" [0 0 0  0 0 0  0 0 0  0 0 0  0 0 0  0 0 0  0 0 0  0 0 0]"
-                           " \"facevarying float s\" [0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0]\n";
+                           " \"facevarying float dirt\" [0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0]\n";
   test::Built b = test::build(world("Color [1 1 0]\n" + mesh + mesh));
   ASSERT_EQ(b.scenes.size(), 1u);
   EXPECT_EQ(b.scenes[0].surfaces.triangles.size(), 2 * kCubeTriangles);
   EXPECT_EQ(count_with(b, Severity::Warning, "\"Cs\" (vertex) is not interpolated"), 1u);
-  EXPECT_EQ(count_with(b, Severity::Warning, "\"s\" is not used"), 1u);
+  EXPECT_EQ(count_with(b, Severity::Warning, "\"dirt\" is not used"), 1u);
   EXPECT_EQ(b.scenes[0].materials[b.scenes[0].surfaces.triangle_material[0]].color, (Vec3f{1, 1, 0}));
 }
 
@@ -81,6 +81,9 @@ TEST(SceneBuilderSubdivision, BadMeshIsAnErrorAtTheRequest) {
            std::string("SubdivisionMesh \"catmull-clark\" [4] [0 1 2 3] \"P\" [0 0 0  1 0 0  1 1 0]"),  // index 3
            std::string("SubdivisionMesh \"sqrt3\" [3] [0 1 2] \"P\" [0 0 0  1 0 0  1 1 0]"),
            kCube + " " + kCubeP + " \"uniform color Cs\" [1 0 0]",
+           kCube + " " + kCubeP + " \"facevarying float[2] st\" [0 0  1 1]",  // 2 of 24 corners
+           kCube + " " + kCubeP + " \"uniform float s\" [0 1 2]",             // 3 of 6 faces
+           kCube + " " + kCubeP + " \"vertex float[3] st\" [0 0 0]",          // st is float[2]
            kCube,  // no P
        }) {
     SCOPED_TRACE(bad);
@@ -88,6 +91,30 @@ TEST(SceneBuilderSubdivision, BadMeshIsAnErrorAtTheRequest) {
     ASSERT_EQ(b.scenes.size(), 1u);
     EXPECT_EQ(count_with(b, Severity::Error, "test.rib:2:1"), 1u);
     EXPECT_EQ(b.scenes[0].surfaces.triangles.size(), 0u);
+  }
+}
+
+// "st" reaches the triangle store as each vertex's (u, v), the texture coordinates of its
+// triangles; without it the store keeps none for the mesh.
+TEST(SceneBuilderSubdivision, StBecomesTheTrianglesTextureCoordinates) {
+  const std::string st = " \"vertex float[2] st\" [0 0  1 0  1 1  0 1  0 0  1 0  1 1  0 1]";
+  for (bool with_st : {false, true}) {
+    test::Built b = test::build(world(kCube + " " + kCubeP + (with_st ? st : "")));
+    ASSERT_EQ(b.scenes.size(), 1u);
+    EXPECT_EQ(count_with(b, Severity::Error, ""), 0u);
+    EXPECT_EQ(count_with(b, Severity::Warning, ""), 0u);
+    const TriangleStore& triangles = b.scenes[0].surfaces.triangles;
+    ASSERT_EQ(triangles.size(), kCubeTriangles);
+    Vec2f uv, duv_dx, duv_dy;
+    // The first triangle's first corner, wherever it is: st within the square the vertices span.
+    const bool has = triangles.parameters(0, triangles.corner(0, 0), {}, {}, uv, duv_dx, duv_dy);
+    EXPECT_EQ(has, with_st);
+    if (has) {
+      EXPECT_GE(uv.x, 0.0f);
+      EXPECT_LE(uv.x, 1.0f);
+      EXPECT_GE(uv.y, 0.0f);
+      EXPECT_LE(uv.y, 1.0f);
+    }
   }
 }
 

@@ -335,6 +335,100 @@ TEST(SubdivisionSurface, BilinearIsTheControlMesh) {
   for (size_t k = 0; k < 12; ++k) EXPECT_GT(dot(geometric_normal(t.mesh, k), t.mesh.P[t.mesh.indices[3 * k]]), 0.0f);
 }
 
+// Vertex-class st is subdivided by the rules that move P, which reproduce affine functions: st
+// given as an affine map of P is that map of the limit position at every emitted vertex,
+// on a mesh with extraordinary vertices and a crease.
+TEST(SubdivisionSurface, VertexStIsSubdividedLikeP) {
+  SubdivisionMeshRequest r;
+  r.scheme = "catmull-clark";
+  r.P = {{0, 0, 0}, {2, 0, 0}, {3, 1, 0}, {1, 2, 0}, {-1, 1, 0}, {4, 3, 0}};
+  r.nvertices = {5, 3};
+  r.vertices = {0, 1, 2, 3, 4, 2, 5, 3};
+  add_tag(r, "interpolateboundary", {}, {});
+  add_tag(r, "crease", {2, 3}, {1.5f});
+  auto st_of = [](const Vec3f& p) { return Vec2f{0.25f * p.x + 0.1f * p.y + 0.5f, -0.2f * p.y + 0.05f * p.x}; };
+  for (const Vec3f& p : r.P) r.vertex_st.push_back(st_of(p));
+  SubdivisionTessellation t = tessellate_subdivision_mesh(r);
+  ASSERT_TRUE(t.ok()) << t.error;
+  ASSERT_EQ(t.mesh.uv.size(), t.mesh.P.size());
+  for (size_t i = 0; i < t.mesh.P.size(); ++i) {
+    EXPECT_NEAR(t.mesh.uv[i].x, st_of(t.mesh.P[i]).x, 1e-5f);
+    EXPECT_NEAR(t.mesh.uv[i].y, st_of(t.mesh.P[i]).y, 1e-5f);
+  }
+  // No seams: the vertices are those of the mesh without st.
+  r.vertex_st.clear();
+  EXPECT_EQ(tessellate_subdivision_mesh(r).mesh.P.size(), t.mesh.P.size());
+}
+
+// Per-corner st is refined linearly inside each face: on a grid whose corners carry the face's
+// own copy of a map, every triangle's st lies in its face's square of the map, a vertex where two
+// faces' values differ (a seam) is emitted once per value, and with one value per vertex (no
+// seam) the vertices are those of the mesh without st.
+TEST(SubdivisionSurface, CornerStIsLinearInsideEachFaceAndSplitsSeams) {
+  SubdivisionMeshRequest r = planar_grid(2);
+  add_tag(r, "interpolateboundary", {}, {});
+  const size_t plain_vertices = tessellate_subdivision_mesh(r).mesh.P.size();
+  // Face f's corners get (f + x - i, y - j): each face its own unit square of s, 10 apart.
+  for (size_t f = 0, c = 0; f < r.nvertices.size(); ++f) {
+    const int i = int(f) % 2, j = int(f) / 2;
+    for (int k = 0; k < 4; ++k, ++c) {
+      const Vec3f& p = r.P[size_t(r.vertices[c])];
+      r.corner_st.push_back({10.0f * float(f) + p.x - float(i), p.y - float(j)});
+    }
+  }
+  SubdivisionTessellation t = tessellate_subdivision_mesh(r);
+  ASSERT_TRUE(t.ok()) << t.error;
+  ASSERT_EQ(t.mesh.uv.size(), t.mesh.P.size());
+  for (size_t k = 0; k < t.mesh.triangle_count(); ++k) {
+    const float base = 10.0f * float(t.triangle_control_face[k]);
+    for (int c = 0; c < 3; ++c) {
+      const Vec2f st = t.mesh.uv[t.mesh.indices[3 * k + c]];
+      EXPECT_GE(st.x, base - 1e-6f);
+      EXPECT_LE(st.x, base + 1.0f + 1e-6f);
+      EXPECT_GE(st.y, -1e-6f);
+      EXPECT_LE(st.y, 1.0f + 1e-6f);
+    }
+  }
+  // The vertices on the edges between faces are emitted once per face (the centre once for each
+  // of its four): more vertices than without st.
+  EXPECT_GT(t.mesh.P.size(), plain_vertices);
+  // The linear rule: a face's centre (the face point, a smooth vertex after refinement) keeps
+  // st (base + 0.5, 0.5) exactly.
+  bool centre_found = false;
+  for (size_t i = 0; i < t.mesh.P.size(); ++i) {
+    if (std::abs(t.mesh.uv[i].x - 0.5f) < 1e-6f && std::abs(t.mesh.uv[i].y - 0.5f) < 1e-6f) centre_found = true;
+  }
+  EXPECT_TRUE(centre_found);
+
+  r.corner_st.clear();
+  for (size_t c = 0; c < r.vertices.size(); ++c) {
+    const Vec3f& p = r.P[size_t(r.vertices[c])];
+    r.corner_st.push_back({p.x, p.y});
+  }
+  SubdivisionTessellation seamless = tessellate_subdivision_mesh(r);
+  EXPECT_EQ(seamless.mesh.P.size(), plain_vertices);
+}
+
+// "bilinear" keeps the control faces: per-corner st is each face's own corners exactly.
+TEST(SubdivisionSurface, BilinearCornerStIsTheCornersValues) {
+  SubdivisionMeshRequest r = cube();
+  r.scheme = "bilinear";
+  for (size_t c = 0; c < r.vertices.size(); ++c) r.corner_st.push_back({float(c), float(c % 4)});
+  SubdivisionTessellation t = tessellate_subdivision_mesh(r);
+  ASSERT_TRUE(t.ok()) << t.error;
+  ASSERT_EQ(t.mesh.uv.size(), t.mesh.P.size());
+  EXPECT_EQ(t.mesh.P.size(), 24u);  // one vertex per corner
+  for (size_t k = 0; k < t.mesh.triangle_count(); ++k) {
+    const uint32_t f = t.triangle_control_face[k];
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t v = t.mesh.indices[3 * k + c];
+      const size_t corner = size_t(t.mesh.uv[v].x);
+      EXPECT_EQ(corner / 4, f);                                   // a corner of its own face
+      EXPECT_EQ(t.mesh.P[v], r.P[size_t(r.vertices[corner])]);  // at that corner's point
+    }
+  }
+}
+
 TEST(SubdivisionSurface, LoopIsRefinedAsCatmullClarkWithAWarning) {
   SubdivisionMeshRequest r = cube();
   r.scheme = "loop";
