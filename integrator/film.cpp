@@ -124,24 +124,31 @@ Film::Film(int width, int height, PixelRect data_window, PixelFilter filter, int
       tile_size_(tile_size > 0 ? tile_size : kDefaultTileSize),
       sums_(static_cast<std::size_t>(data_window_.width()) * data_window_.height()) {}
 
+PixelRect Film::filter_reach(const PixelRect& r) const {
+  // A sample in pixel column i lies in [i, i + 1] (a jittered position may round up to i + 1), so
+  // it reaches the pixel centres within the radius: at most ceil(radius) columns beyond.
+  const int ax = static_cast<int>(std::ceil(filter_.radius_x()));
+  const int ay = static_cast<int>(std::ceil(filter_.radius_y()));
+  return PixelRect{r.x0 - ax, r.y0 - ay, r.x1 + ax, r.y1 + ay};
+}
+
 std::vector<PixelRect> Film::tiles() const {
+  if (data_window_.empty()) return {};
+  const PixelRect sampled = intersect(filter_reach(data_window_), PixelRect{0, 0, width_, height_});
   std::vector<PixelRect> result;
-  for (int y = data_window_.y0; y < data_window_.y1; y += tile_size_) {
-    for (int x = data_window_.x0; x < data_window_.x1; x += tile_size_) {
-      result.push_back(
-          PixelRect{x, y, std::min(x + tile_size_, data_window_.x1), std::min(y + tile_size_, data_window_.y1)});
+  // The whole image's grid, from its corner whatever the crop, so that a crop's tiles are the
+  // whole image's (cut), in the same order.
+  for (int y = sampled.y0 / tile_size_ * tile_size_; y < sampled.y1; y += tile_size_) {
+    for (int x = sampled.x0 / tile_size_ * tile_size_; x < sampled.x1; x += tile_size_) {
+      const PixelRect tile = intersect(PixelRect{x, y, x + tile_size_, y + tile_size_}, sampled);
+      if (!tile.empty()) result.push_back(tile);
     }
   }
   return result;
 }
 
 TileAccumulator Film::make_accumulator(const PixelRect& tile) const {
-  // A sample inside the tile reaches pixels whose centres are within the radius, i.e. at most
-  // ceil(radius) pixels beyond the tile on each side.
-  const int ax = static_cast<int>(std::ceil(filter_.radius_x()));
-  const int ay = static_cast<int>(std::ceil(filter_.radius_y()));
-  const PixelRect expanded{tile.x0 - ax, tile.y0 - ay, tile.x1 + ax, tile.y1 + ay};
-  return TileAccumulator(intersect(tile, data_window_), intersect(expanded, data_window_), filter_);
+  return TileAccumulator(intersect(tile, data_window_), intersect(filter_reach(tile), data_window_), filter_);
 }
 
 void Film::merge(const TileAccumulator& tile) {

@@ -102,10 +102,15 @@ class Film {
   const PixelRect& data_window() const { return data_window_; }
   const PixelFilter& filter() const { return filter_; }
 
-  // Tiles covering the data window, row-major, tile_size x tile_size pixels (smaller at the
-  // right and bottom edges). The index in this vector is the tile index for merge order.
+  // The render tiles: the pixels whose samples are rendered, one rectangle per tile, in merge
+  // order (the index in this vector). They are the whole image's tile_size x tile_size grid from
+  // its top-left corner, row-major, cut to the data window grown by the filter's reach (the
+  // pixels whose samples reach a pixel of it) and to the image. So a crop renders the samples
+  // around it that its edge pixels' filters reach, and each of its pixels gets the same samples
+  // added in the same order as in the whole image: a crop is bitwise that part of the whole image
+  // (tests/render/crop_render_test.cpp), which lets a farm render a frame as tiles (darc --crop).
   std::vector<PixelRect> tiles() const;
-  // An empty accumulator for a tile from tiles(), covering the tile expanded by the filter radius.
+  // An empty accumulator for a tile from tiles(), covering the tile grown by the filter's reach.
   TileAccumulator make_accumulator(const PixelRect& tile) const;
   // Adds a tile's sums into the film. Call it in tile-index order for bitwise determinism.
   void merge(const TileAccumulator& tile);
@@ -119,6 +124,9 @@ class Film {
   std::int64_t nonfinite_samples() const { return nonfinite_samples_; }
 
  private:
+  // `r` grown by the filter's reach: ceil(radius) pixels each side.
+  PixelRect filter_reach(const PixelRect& r) const;
+
   int width_, height_;
   PixelRect data_window_;
   PixelFilter filter_;

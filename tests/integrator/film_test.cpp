@@ -48,17 +48,45 @@ Image render(Film film, int per_pixel) {
 
 PixelFilter filter(const char* name, float w) { return make_pixel_filter(name, w, w).value(); }
 
-TEST(Film, TilesCoverTheDataWindowRowMajor) {
-  const Film film(100, 50, PixelRect{10, 5, 80, 45}, filter("box", 1), 32);
+TEST(Film, TilesAreTheImagesGridRowMajor) {
+  const Film film(100, 50, PixelRect{0, 0, 100, 50}, filter("gaussian", 2), 32);
   const auto tiles = film.tiles();
-  ASSERT_EQ(tiles.size(), 6u);  // 3 columns (32, 32, 6) x 2 rows (32, 8)
-  EXPECT_EQ(tiles[0], (PixelRect{10, 5, 42, 37}));
-  EXPECT_EQ(tiles[1], (PixelRect{42, 5, 74, 37}));
-  EXPECT_EQ(tiles[2], (PixelRect{74, 5, 80, 37}));
-  EXPECT_EQ(tiles[3], (PixelRect{10, 37, 42, 45}));
-  long area = 0;
-  for (const auto& t : tiles) area += static_cast<long>(t.width()) * t.height();
-  EXPECT_EQ(area, 70L * 40L);
+  ASSERT_EQ(tiles.size(), 8u);  // 4 columns (32, 32, 32, 4) x 2 rows (32, 18)
+  EXPECT_EQ(tiles[0], (PixelRect{0, 0, 32, 32}));
+  EXPECT_EQ(tiles[3], (PixelRect{96, 0, 100, 32}));
+  EXPECT_EQ(tiles[4], (PixelRect{0, 32, 32, 50}));
+}
+
+TEST(Film, ACropsTilesAreTheImagesGridCutToTheCropAndTheFilterReachAroundIt) {
+  // The gaussian 3 3 reaches ceil(1.5) = 2 pixels: samples of columns 8 to 81, rows 3 to 46.
+  const Film film(100, 50, PixelRect{10, 5, 80, 45}, filter("gaussian", 3), 32);
+  const auto tiles = film.tiles();
+  ASSERT_EQ(tiles.size(), 6u);  // the image's columns 0, 32, 64 x rows 0, 32, cut
+  EXPECT_EQ(tiles[0], (PixelRect{8, 3, 32, 32}));
+  EXPECT_EQ(tiles[1], (PixelRect{32, 3, 64, 32}));
+  EXPECT_EQ(tiles[2], (PixelRect{64, 3, 82, 32}));
+  EXPECT_EQ(tiles[3], (PixelRect{8, 32, 32, 47}));
+  EXPECT_EQ(tiles[5], (PixelRect{64, 32, 82, 47}));
+  // At the image's edge nothing is sampled outside it; a crop within one grid tile is one tile.
+  const Film edge(100, 50, PixelRect{0, 40, 20, 50}, filter("gaussian", 3), 32);
+  EXPECT_EQ(edge.tiles(), (std::vector<PixelRect>{PixelRect{0, 38, 22, 50}}));
+}
+
+// With samples a pure function of their pixel (as the hiders draw them), a crop's pixels are
+// bitwise the whole film's there, for a filter reaching 2 pixels with negative lobes.
+TEST(Film, ACropsPixelsAreBitwiseTheWholeFilmsPixels) {
+  const int w = 70, h = 45;
+  const Image whole = render(Film(w, h, PixelRect{0, 0, w, h}, filter("catmull-rom", 4), 16), 3);
+  for (const PixelRect crop : {PixelRect{5, 7, 37, 30}, PixelRect{16, 0, 32, 16}, PixelRect{50, 40, 70, 45}}) {
+    const Image part = render(Film(w, h, crop, filter("catmull-rom", 4), 16), 3);
+    ASSERT_EQ(part.data_window, crop);
+    for (int y = crop.y0; y < crop.y1; ++y)
+      for (int x = crop.x0; x < crop.x1; ++x)
+        for (int c = 0; c < part.channels(); ++c) {
+          const float a = part.at(x, y, c), b = whole.at(x, y, c);
+          ASSERT_EQ(std::memcmp(&a, &b, sizeof a), 0) << x << "," << y << " channel " << c;
+        }
+  }
 }
 
 TEST(Film, DataWindowIsClippedToTheImage) {
