@@ -4,6 +4,7 @@
 #include "app/frame_list.h"
 #include "integrator/render_frame.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,9 @@ struct AppOptions {
   std::string output;               // -o: overrides the Display name
   std::string preview;              // --preview: also write an 8-bit preview (PNG/TIFF/JPEG)
   int xres = 0, yres = 0;           // --res
+  // --crop xmin xmax ymin ymax: the CropWindow of every frame, whatever the RIB says (NDC, as
+  // CropWindow; prman -crop).
+  std::optional<std::array<double, 4>> crop;
   HiderKind hider = HiderKind::Distance;
   int pixel_samples = 0;            // --pixel-samples N (N x N); 0 keeps PixelSamples
   int threads = 0;

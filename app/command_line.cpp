@@ -3,8 +3,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <array>
 #include <charconv>
 #include <cstdlib>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,6 +45,15 @@ bool parse_resolution(std::string_view text, int& width, int& height) {
   return true;
 }
 
+// --crop's four values, when they make a crop window as CropWindow's rule has it (RI Spec 3.2:
+// 0 <= xmin < xmax <= 1 and the same for y); whether it keeps a pixel is checked per frame, once
+// the resolution is known.
+std::optional<std::array<double, 4>> parse_crop(const std::vector<double>& v) {
+  auto in01 = [](double x) { return x >= 0 && x <= 1; };
+  if (v.size() != 4 || !std::ranges::all_of(v, in01) || v[0] >= v[1] || v[2] >= v[3]) return std::nullopt;
+  return std::array<double, 4>{v[0], v[1], v[2], v[3]};
+}
+
 // "a:b::c" -> {a, b, c}: a colon-separated list of folders, as PATH is written.
 std::vector<std::string> split_folder_list(std::string_view list) {
   std::vector<std::string> folders;
@@ -67,6 +80,14 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
   app.add_option("--preview", o.preview, "also write an 8-bit preview through the OCIO display transform");
   std::string res;
   app.add_option("--res", res, "resolution WxH (overrides Format)");
+  std::vector<double> crop;
+  app.add_option("--crop", crop,
+                 "render only the part xmin xmax ymin ymax of the image (fractions, 0 <= xmin < xmax <= 1, as "
+                 "CropWindow, which it overrides): the file keeps the full display window, the crop is its data "
+                 "window")
+      ->expected(4)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::Throw);
   std::string hider = "distance";
   app.add_option("--hider", hider, "distance (default) | stochastic")->check(CLI::IsMember({"distance", "stochastic"}));
   app.add_option("--pixel-samples", o.pixel_samples, "N x N samples per pixel (overrides PixelSamples)")
@@ -143,6 +164,17 @@ AppOptions parse_command_line(int argc, char** argv, bool& exit_now, int& exit_c
       if (!parse_resolution(res, o.xres, o.yres))
         throw CLI::ValidationError(
             "--res", "expected WxH with 1 <= W, H <= " + std::to_string(kMaxResolution) + ", found \"" + res + "\"");
+    }
+    if (!crop.empty()) {
+      o.crop = parse_crop(crop);
+      if (!o.crop) {
+        std::ostringstream found;
+        for (double v : crop) found << (found.tellp() > 0 ? " " : "") << v;
+        throw CLI::ValidationError("--crop",
+                                   "expected xmin xmax ymin ymax with 0 <= xmin < xmax <= 1 and 0 <= ymin "
+                                   "< ymax <= 1, found \"" +
+                                       found.str() + "\"");
+      }
     }
     if (!frames.empty()) {
       std::string error;

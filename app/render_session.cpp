@@ -79,6 +79,7 @@ int run_render_session(const AppOptions& o) {
   overrides.xres = o.xres;
   overrides.yres = o.yres;
   overrides.pixel_samples = o.pixel_samples;
+  overrides.crop = o.crop;
   set_frame_memory_limit(o, overrides);
   // -o is the user's; without it, the RIB's Display names stay in the working folder unless the
   // user trusts the RIB.

@@ -19,7 +19,9 @@ bool read_image(const std::filesystem::path& p, Pixels& out) {
   out.height = s.height;
   out.channels = s.nchannels;
   out.v.resize(size_t(s.width) * s.height * s.nchannels);
-  return buf.get_pixels(OIIO::ROI(0, s.width, 0, s.height, 0, 1, 0, s.nchannels), OIIO::TypeDesc::FLOAT, out.v.data());
+  // The data window, wherever it starts (a crop's does not start at 0, 0).
+  return buf.get_pixels(OIIO::ROI(s.x, s.x + s.width, s.y, s.y + s.height, 0, 1, 0, s.nchannels), OIIO::TypeDesc::FLOAT,
+                        out.v.data());
 }
 
 std::optional<OIIO::ImageSpec> read_image_header(const std::filesystem::path& p) {

@@ -19,8 +19,8 @@ struct Pixels {
   bool identical_to(const Pixels& o) const;
 };
 
-// Reads every channel of the first subimage of `p` as floats into `out`; false when it does not
-// open or read.
+// Reads every channel of the first subimage of `p` as floats into `out` (its data window: pixel
+// (0, 0) of `out` is the data window's corner); false when it does not open or read.
 bool read_image(const std::filesystem::path& p, Pixels& out);
 
 // The header (size, channels, metadata) of an image file; nullopt when it does not open.

@@ -124,10 +124,11 @@ void SceneBuilder::start_scene(const SourceLoc& loc) {
     out.yres = overrides_.yres;
   }
   if (overrides_.pixel_samples > 0) out.pixel_samples[0] = out.pixel_samples[1] = overrides_.pixel_samples;
+  if (overrides_.crop) std::copy(overrides_.crop->begin(), overrides_.crop->end(), out.crop);
   if (!overrides_.output.empty()) out.display_name = overrides_.output;
   out.frame_number = frame_number_;
   out.has_frame_number = has_frame_number_;
-  check_crop_window(out);
+  check_crop_window(out, loc);
   s.output = out;
   count_image_memory(out);
 

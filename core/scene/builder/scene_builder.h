@@ -13,6 +13,7 @@
 #include "parser/diagnostics.h"
 #include "parser/ri_target.h"
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -30,6 +31,8 @@ struct PatchMeshDescription;  // core/geometry/surfaces/patches/patch_tessellati
 struct FrameOverrides {
   int xres = 0, yres = 0;             // --res (0: keep Format)
   double pixel_samples = 0;           // --pixel-samples (0: keep PixelSamples)
+  // --crop xmin xmax ymin ymax: replaces every frame's CropWindow (unset: keep CropWindow).
+  std::optional<std::array<double, 4>> crop;
   std::string output;                 // -o (empty: keep Display name)
   // The memory a frame's geometry may take (core/scene/frame_memory.h estimates it request by request);
   // a frame over it fails with an error naming the request that crossed it and is not rendered.
@@ -120,12 +123,13 @@ class SceneBuilder : public RiTarget {
   void start_scene(const SourceLoc& loc);
   // The camera checks that need the frame's final state (scene_builder_frame_checks.cpp): the
   // frame aspect ratio, clamped to where the screen window stays within float range, and a crop
-  // window that must cover a pixel (else an error at the CropWindow, and no crop).
+  // window that must cover a pixel (else an error at the CropWindow, or at WorldBegin for
+  // --crop, and no crop).
   double checked_frame_aspect(double aspect, const SourceLoc& world_begin);
   // The current transform as the world-to-camera transform: the identity (with a warning) when
   // it is singular, as the camera must be inverted.
   Matrix4 checked_camera_transform(const SourceLoc& world_begin);
-  void check_crop_window(OutputSettings& out);
+  void check_crop_window(OutputSettings& out, const SourceLoc& world_begin);
   // casts_shadows: given by a RIS Light; else from "shadowname" and Attribute "light". `request`:
   // the RIB request that declared it, as its warnings name it.
   void add_light(const std::string& name, const std::string& handle, const ParamList& params, const SourceLoc& loc,

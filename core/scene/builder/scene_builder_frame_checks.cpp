@@ -43,10 +43,12 @@ Matrix4 SceneBuilder::checked_camera_transform(const SourceLoc& world_begin) {
   return Matrix4{};
 }
 
-void SceneBuilder::check_crop_window(OutputSettings& out) {
+void SceneBuilder::check_crop_window(OutputSettings& out, const SourceLoc& world_begin) {
   const double* c = out.crop;
   if (crop_keeps_a_pixel(out.xres, c[0], c[1]) && crop_keeps_a_pixel(out.yres, c[2], c[3])) return;
-  diag_.error(options_.crop_loc, "CropWindow",
+  // --crop is checked here too: whether it keeps a pixel depends on each frame's resolution.
+  const bool from_command_line = overrides_.crop.has_value();
+  diag_.error(from_command_line ? world_begin : options_.crop_loc, from_command_line ? "--crop" : "CropWindow",
               fmt::format("[{} {} {} {}] keeps no pixel of the {}x{} image: the whole image is rendered", c[0], c[1],
                           c[2], c[3], out.xres, out.yres));
   out.crop[0] = out.crop[2] = 0;
