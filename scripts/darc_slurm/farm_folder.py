@@ -1,11 +1,20 @@
 """The farm folder of one sequence: what the sequence is (RIB files, frames, output pattern, darc
-arguments), every submission made for it, and where each frame's log and stats go.
+arguments, tiles per frame), every submission made for it, and where each frame's log and stats go.
 
     DIR/sequence.json          the sequence and its submissions (rewritten whole, atomically)
     DIR/tasks/submit-N.sh      the batch script of submission N (task_script.py)
-    DIR/logs/frame.NNNN.log    the last attempt at frame NNNN: darc's command, its output, its end
+    DIR/logs/frame.NNNN.log    the attempts at frame NNNN: darc's command, its output, its end (with
+                               --tiles: the attempts at merging its tiles)
     DIR/stats/frame.NNNN.json  darc's --stats for that frame
     DIR/slurm/JOB_TASK.out     what Slurm captured from each array task's script
+
+With --tiles (tiles.py), each tile K of frame NNNN has its own files, the image only until the
+frame's tiles are merged into its image (tile_merge.py):
+
+    DIR/tiles/frame.NNNN.tile.K.exr   the tile: the frame's full display window, the row as data window
+    DIR/tiles/frame.NNNN.lock         held while the frame's tiles are merged
+    DIR/logs/frame.NNNN.tile.K.log    the attempts at the tile, as a frame's
+    DIR/stats/frame.NNNN.tile.K.json  darc's --stats for the tile
 
 A folder holds one sequence: submitting another one into it is refused, so that the status of a
 folder always describes the images one command line asked for."""
@@ -20,12 +29,19 @@ import os
 from pathlib import Path
 
 from darc_slurm.frames import format_frame_list, substitute_frame_number
+from darc_slurm.tiles import Tile
 
 MANIFEST_NAME = "sequence.json"
-MANIFEST_VERSION = 1
+# Version 2 added the sequence's tiles per frame; a version 1 manifest is read as one tile per frame.
+MANIFEST_VERSION = 2
+READABLE_MANIFEST_VERSIONS = (1, 2)
 # Names of the per-frame files: darc's '#' rule, so they sort in frame order up to frame 9999.
 LOG_PATTERN = "logs/frame.####.log"
 STATS_PATTERN = "stats/frame.####.json"
+# A tile's files: the frame's name, then ".tile.K" and the extension (tiles.py: Tile.label).
+TILE_IMAGE_STEM = "tiles/frame.####"
+TILE_LOG_STEM = "logs/frame.####"
+TILE_STATS_STEM = "stats/frame.####"
 
 
 class FarmFolderError(Exception):
@@ -40,22 +56,23 @@ class Sequence:
     frames: tuple[int, ...]  # sorted, distinct
     output: str  # absolute image name with darc's frame pattern
     darc_args: tuple[str, ...]  # passed to darc before the RIB files
+    tiles: int = 1  # rows each frame is cut into (tiles.py); 1: frames are rendered whole
 
     def image(self, frame: int) -> Path:
         return Path(substitute_frame_number(self.output, frame))
 
     def to_json(self) -> dict:
         return {"ribs": list(self.ribs), "frames": list(self.frames), "output": self.output,
-                "darc_args": list(self.darc_args)}
+                "darc_args": list(self.darc_args), "tiles": self.tiles}
 
     @staticmethod
     def from_json(j: dict) -> "Sequence":
-        return Sequence(tuple(j["ribs"]), tuple(j["frames"]), j["output"], tuple(j["darc_args"]))
+        return Sequence(tuple(j["ribs"]), tuple(j["frames"]), j["output"], tuple(j["darc_args"]), int(j.get("tiles", 1)))
 
     def differences(self, other: "Sequence") -> list[str]:
         """What differs from `other`, in words, for the message that refuses to mix sequences."""
         said = []
-        for name in ("ribs", "frames", "output", "darc_args"):
+        for name in ("ribs", "frames", "output", "darc_args", "tiles"):
             mine, theirs = getattr(self, name), getattr(other, name)
             if mine != theirs:
                 said.append(f"{name}: {_brief(theirs)} in the folder, {_brief(mine)} now")
@@ -63,6 +80,8 @@ class Sequence:
 
 
 def _brief(value) -> str:
+    if isinstance(value, int):
+        return str(value)
     if isinstance(value, tuple) and value and isinstance(value[0], int):
         return format_frame_list(list(value))
     return json.dumps(list(value) if isinstance(value, tuple) else value)
@@ -91,11 +110,26 @@ class FarmFolder:
     def stats(self, frame: int) -> Path:
         return self.path / substitute_frame_number(STATS_PATTERN, frame)
 
+    def tile_image(self, frame: int, tile: Tile) -> Path:
+        return self._tile_file(TILE_IMAGE_STEM, frame, tile, ".exr")
+
+    def tile_log(self, frame: int, tile: Tile) -> Path:
+        return self._tile_file(TILE_LOG_STEM, frame, tile, ".log")
+
+    def tile_stats(self, frame: int, tile: Tile) -> Path:
+        return self._tile_file(TILE_STATS_STEM, frame, tile, ".json")
+
+    def tile_lock(self, frame: int) -> Path:
+        return self.path / substitute_frame_number(TILE_IMAGE_STEM + ".lock", frame)
+
+    def _tile_file(self, stem: str, frame: int, tile: Tile, extension: str) -> Path:
+        return self.path / substitute_frame_number(f"{stem}.tile.{tile.label}{extension}", frame)
+
     def exists(self) -> bool:
         return (self.path / MANIFEST_NAME).is_file()
 
-    def create(self) -> None:
-        for sub in ("tasks", "logs", "stats", "slurm"):
+    def create(self, tiled: bool = False) -> None:
+        for sub in ("tasks", "logs", "stats", "slurm") + (("tiles",) if tiled else ()):
             (self.path / sub).mkdir(parents=True, exist_ok=True)
 
     @contextlib.contextmanager
@@ -110,7 +144,7 @@ class FarmFolder:
         manifest = self.path / MANIFEST_NAME
         try:
             j = json.loads(manifest.read_text())
-            if j.get("version") != MANIFEST_VERSION:
+            if j.get("version") not in READABLE_MANIFEST_VERSIONS:
                 raise FarmFolderError(f"{manifest}: version {j.get('version')}, this darc-slurm reads "
                                       f"version {MANIFEST_VERSION}")
             return Sequence.from_json(j["sequence"]), [Submission(**s) for s in j["submissions"]]

@@ -11,8 +11,13 @@ leaves out, and exits with 3 (scene error) for an error in any of them. Each ima
 errors of its own frame, so a frame whose darc exited with 3 but whose image exists and records
 no errors is done: the error belongs to another frame, which is failed by its own image.
 
-A new submission renders the failed and missing frames; darc's --skip-existing renders a frame
-with recorded errors again too."""
+A frame cut into tiles (--tiles) is done by its merged image alone. Until then each tile stands
+by the same rules, from its own image and log; the frame is failed when a tile is, or when the
+last attempt at merging its finished tiles failed (the frame's log holds the merge attempts), and
+missing otherwise, saying how many tiles are done and why the first other one is not.
+
+A new submission renders the failed and missing frames (tiles); darc's --skip-existing renders a
+frame (tile) with recorded errors again too."""
 
 from __future__ import annotations
 
@@ -21,6 +26,7 @@ from pathlib import Path
 
 from darc_slurm.farm_folder import FarmFolder, Sequence
 from darc_slurm.task_script import LOG_ATTEMPT_PREFIX, LOG_EXIT_PREFIX, LOG_INTERRUPTED_PREFIX
+from darc_slurm.tiles import Tile, frame_tiles
 
 DONE, FAILED, MISSING = "done", "failed", "missing"
 # darc killed by SIGTERM (128 + 15): the task's trap may not have had the last word in the log.
@@ -36,11 +42,21 @@ except ImportError:  # python3-openimageio (scripts/setup installs it); without 
 
 
 @dataclasses.dataclass(frozen=True)
+class TileStatus:
+    tile: Tile
+    state: str  # DONE, FAILED or MISSING
+    reason: str  # for FAILED and MISSING: why, in a few words
+    log: Path | None  # the tile's log, when it has one
+
+
+@dataclasses.dataclass(frozen=True)
 class FrameStatus:
     frame: int
     state: str  # DONE, FAILED or MISSING
     reason: str  # for FAILED and MISSING: why, in a few words
-    log: Path | None  # the frame's log, when it has one
+    log: Path | None  # the log that says why (a tile's, or the merge's, for a tiled frame), when it has one
+    # A tiled frame not done: where each of its tiles stands (empty for a frame rendered whole, or done).
+    tiles: tuple[TileStatus, ...] = ()
 
 
 @dataclasses.dataclass(frozen=True)
@@ -109,17 +125,17 @@ def _with_errors(record: ImageRecord) -> str:
     return f"the image records {record.errors} scene error{'s' if record.errors != 1 else ''}{first}"
 
 
-def frame_status(folder: FarmFolder, sequence: Sequence, frame: int, queued_frames: set[int]) -> FrameStatus:
-    """`queued_frames`: the frames of the folder's jobs that Slurm still has queued or running."""
-    image = sequence.image(frame)
-    log_path = folder.log(frame)
+def render_status(image: Path, log_path: Path, frame: int, queued: bool) -> tuple[str, str, Path | None]:
+    """(state, reason, log) of one darc render of frame `frame` into `image` (the frame's image, or a
+    tile's), from the image and the log of its attempts; `queued`: Slurm still has its task queued
+    or running."""
     outcome = read_log_outcome(log_path)
     log = log_path if outcome.started else None
     record = read_image_record(image) if image.exists() else None
     interrupted_by = outcome.interrupted_by or ("SIGTERM" if outcome.exit_code == EXIT_BY_SIGTERM else "")
 
-    def status(state: str, reason: str = "") -> FrameStatus:
-        return FrameStatus(frame, state, reason, log)
+    def status(state: str, reason: str = "") -> tuple[str, str, Path | None]:
+        return state, reason, log
 
     if outcome.exit_code not in (None, 0, EXIT_SCENE_ERROR, EXIT_BY_SIGTERM):
         errors = f"; {_with_errors(record)}" if record and record.errors > 0 else ""
@@ -138,8 +154,51 @@ def frame_status(folder: FarmFolder, sequence: Sequence, frame: int, queued_fram
     if interrupted_by:
         return status(MISSING, f"interrupted by {interrupted_by} (scancel, time limit or preemption)")
     if outcome.started:
-        return status(MISSING, "rendering" if frame in queued_frames else "stopped while rendering (the task was killed)")
-    return status(MISSING, "queued" if frame in queued_frames else "not rendered")
+        return status(MISSING, "rendering" if queued else "stopped while rendering (the task was killed)")
+    return status(MISSING, "queued" if queued else "not rendered")
+
+
+def frame_status(folder: FarmFolder, sequence: Sequence, frame: int, queued_frames: set[int]) -> FrameStatus:
+    """`queued_frames`: the frames of the folder's jobs that Slurm still has queued or running."""
+    queued = frame in queued_frames
+    if sequence.tiles == 1:
+        return FrameStatus(frame, *render_status(sequence.image(frame), folder.log(frame), frame, queued))
+    return _tiled_frame_status(folder, sequence, frame, queued)
+
+
+def _tiled_frame_status(folder: FarmFolder, sequence: Sequence, frame: int, queued: bool) -> FrameStatus:
+    image = sequence.image(frame)
+    if image.exists():
+        record = read_image_record(image)
+        if record.opens and record.errors == 0:
+            return FrameStatus(frame, DONE, "", None)
+        if record.opens:
+            return FrameStatus(frame, FAILED, _with_errors(record), None)
+        # An image that does not open: its tiles say what is left to do.
+    tiles = tuple(TileStatus(tile, *render_status(folder.tile_image(frame, tile), folder.tile_log(frame, tile), frame,
+                                                  queued))
+                  for tile in frame_tiles(sequence.tiles))
+    done = sum(t.state == DONE for t in tiles)
+    failed = next((t for t in tiles if t.state == FAILED), None)
+    if failed:
+        return FrameStatus(frame, FAILED, f"tile {failed.tile.number} of {sequence.tiles}: {failed.reason}", failed.log,
+                           tiles)
+    if done < sequence.tiles:
+        first = next(t for t in tiles if t.state != DONE)
+        return FrameStatus(frame, MISSING, f"{done} of {sequence.tiles} tiles done; tile {first.tile.number}: "
+                           f"{first.reason}", first.log, tiles)
+    merge_log = folder.log(frame)
+    merge = read_log_outcome(merge_log)
+    log = merge_log if merge.started else None
+    if merge.exit_code not in (None, 0, EXIT_BY_SIGTERM):
+        return FrameStatus(frame, FAILED, f"merging the tiles failed (exit {merge.exit_code})", log, tiles)
+    if image.exists():
+        return FrameStatus(frame, MISSING, "the merged image does not open", log, tiles)
+    if merge.interrupted_by or merge.exit_code == EXIT_BY_SIGTERM:
+        return FrameStatus(frame, MISSING, "merging the tiles was interrupted by "
+                           f"{merge.interrupted_by or 'SIGTERM'}", log, tiles)
+    return FrameStatus(frame, MISSING, f"all {sequence.tiles} tiles done, not merged" + (" yet" if queued else ""),
+                       log, tiles)
 
 
 def sequence_status(folder: FarmFolder, sequence: Sequence, queued_frames: set[int]) -> list[FrameStatus]:

@@ -6,8 +6,10 @@ The test starts its own munged, slurmctld and slurmd (Debian's slurm-wlm and mun
 Slurm or munge the machine may already run. It then renders a 12-frame sequence as 4 array tasks
 of 3 frames, cancels one task while darc renders its first frame (scancel JOB_TASK), checks the
 status command's done / missing lists, submits the same command again, and checks that every frame
-exists, opens and has bitwise the pixels of a local darc render of the same frames (EXR metadata
-holds the render time, so pixels are compared, not files). The daemons are stopped at the end
+exists, opens and is the image of a local darc render of the same frames: bitwise the same pixels,
+windows, channels and attributes but the render time and date (farm_images.py). Then it renders three
+frames cut into 4 tiles each (--tiles 4, 12 array tasks at once), merged by the last tile of
+each frame, and checks them against the same local render. The daemons are stopped at the end
 whatever happens (and die with this process if it is killed: PR_SET_PDEATHSIG).
 
 Exit codes: 0 passed, 1 failed, 77 skipped (ctest SKIP_RETURN_CODE): Slurm or munge is not
@@ -33,12 +35,16 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from farm_images import same_image  # noqa: E402
 from farm_scene import write_sequence_rib  # noqa: E402
 
 EXIT_SKIP = 77
 FRAMES = 12
 CHUNK = 3  # frames per array task: 4 tasks
 CANCELLED_TASK = 1  # frames 4-6; frame 4 is the scene's slow frame, rendering when scancel comes
+# The tiled farm: frames 1-3 (not the slow one), 4 rows each.
+TILED_FRAMES = 3
+TILES = 4
 # How long to wait for each thing the daemons or jobs should do before the test fails: far above
 # what each takes here (seconds), so that only a hang ends the test.
 DAEMON_START_SECONDS = 60
@@ -252,25 +258,6 @@ def farm_status(darc_slurm: str, farm: Path, env: dict) -> dict:
     return json.loads(r.stdout)
 
 
-def same_pixels(a_path: Path, b_path: Path) -> str:
-    """'' when both images open and have the same size, channels, pixel type and pixels (every
-    value equal: a half-float EXR read as float is exact); else what differs."""
-    import OpenImageIO as oiio
-    a, b = oiio.ImageBuf(str(a_path)), oiio.ImageBuf(str(b_path))
-    for buf, path in ((a, a_path), (b, b_path)):
-        if not buf.read(0, 0, True) or buf.has_error:
-            return f"{path} does not open: {buf.geterror()}"
-    sa, sb = a.spec(), b.spec()
-    shape_a = (sa.width, sa.height, tuple(sa.channelnames), str(sa.format))
-    shape_b = (sb.width, sb.height, tuple(sb.channelnames), str(sb.format))
-    if shape_a != shape_b:
-        return f"{a_path} is {shape_a}, {b_path} is {shape_b}"
-    result = oiio.ImageBufAlgo.compare(a, b, 0.0, 0.0)
-    if result.nfail or result.maxerror != 0.0:
-        return f"{result.nfail} pixels differ (max {result.maxerror} at {result.maxx},{result.maxy})"
-    return ""
-
-
 def farm_test(args, scratch: Path, cluster: SlurmCluster) -> None:
     env = cluster.env
     rib = scratch / "sequence.rib"
@@ -339,7 +326,7 @@ def farm_test(args, scratch: Path, cluster: SlurmCluster) -> None:
     # Every frame: exists, opens, pixels bitwise those of the local render; a log that ends with
     # exit 0, and its own stats.
     for f in range(1, FRAMES + 1):
-        difference = same_pixels(scratch / "out" / f"f.{f:04d}.exr", scratch / "local" / f"f.{f:04d}.exr")
+        difference = same_image(scratch / "out" / f"f.{f:04d}.exr", scratch / "local" / f"f.{f:04d}.exr")
         check(difference == "", f"frame {f}: {difference}")
         frame_log = (farm / "logs" / f"frame.{f:04d}.log").read_text()
         check(frame_log.rstrip().endswith("darc-slurm: exit 0"), f"frame {f}'s log:\n{frame_log}")
@@ -357,6 +344,30 @@ def farm_test(args, scratch: Path, cluster: SlurmCluster) -> None:
     # Once everything is done, the same command submits nothing.
     r = run(submit, env)
     check("nothing to submit: 12 of 12 frames done" in r.stdout, f"third submission:\n{r.stdout}")
+
+
+def tiled_farm_test(args, scratch: Path, cluster: SlurmCluster) -> None:
+    """Frames 1-3 of the sequence, each cut into 4 rows (--tiles 4): 12 array tasks on the node's
+    CPUs at once, the last tile of each frame merging it; every frame bitwise the local render."""
+    env = cluster.env
+    farm = scratch / "farm-tiled"
+    out = scratch / "out-tiled"
+    r = run([args.darc_slurm, "submit", "--dir", str(farm), "--frames", f"1-{TILED_FRAMES}", "--tiles", str(TILES),
+             "--partition", "darctest", "--time", "10", "--cpus-per-task", "1", "--darc", args.darc,
+             "-o", str(out / "f.####.exr"), "--wait", str(scratch / "sequence.rib")], env, expect=None)
+    check(r.returncode == 0 and f"{TILED_FRAMES * TILES} array tasks of up to 1 tile of {TILES} per frame" in r.stdout
+          and re.search(rf"^done +{TILED_FRAMES}  1-{TILED_FRAMES}$", r.stdout, re.M) is not None,
+          f"tiled submission (--wait): exit {r.returncode}\n{r.stdout}\n{r.stderr}")
+    log("tiled frames:\n" + r.stdout.rstrip())
+    for f in range(1, TILED_FRAMES + 1):
+        difference = same_image(out / f"f.{f:04d}.exr", scratch / "local" / f"f.{f:04d}.exr")
+        check(difference == "", f"tiled frame {f}: {difference}")
+        merges = (farm / "logs" / f"frame.{f:04d}.log").read_text()
+        check(merges.count(f"merged {TILES} tiles into") == 1, f"frame {f} was not merged exactly once:\n{merges}")
+    check(sorted(p.name for p in out.iterdir()) == [f"f.{f:04d}.exr" for f in range(1, TILED_FRAMES + 1)],
+          f"the tiled output folder: {sorted(p.name for p in out.iterdir())}")
+    check(not list((farm / "tiles").glob("*.exr")), f"tiles left: {list((farm / 'tiles').glob('*.exr'))}")
+    log(f"all {TILED_FRAMES} tiled frames match the local render")
 
 
 def main() -> int:
@@ -387,6 +398,7 @@ def main() -> int:
         log(f"starting munged, slurmctld and slurmd in {cluster.root}")
         cluster.start()
         farm_test(args, scratch, cluster)
+        tiled_farm_test(args, scratch, cluster)
     except TestFailure as e:
         print(f"slurm_farm: FAILED: {e}", file=sys.stderr)
         return 1

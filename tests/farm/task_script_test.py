@@ -4,7 +4,9 @@ the farm folder and the batch script; the test runs the script's array tasks by 
 (SLURM_ARRAY_TASK_ID=i bash SCRIPT, as the script's header says) and checks the logs, the
 per-frame stats and what `status` makes of them: a frame with a scene error and a frame the RIB
 does not have are failed, a task stopped with SIGTERM leaves its frame missing (interrupted), and
-the next submission covers exactly the frames not done. Also the usage errors of `submit`.
+the next submission covers exactly the frames not done. Frames cut into tiles (--tiles) are merged
+by the task of their last tile into bitwise the image of a local darc run. Also the usage errors
+of `submit`.
 
     tests/farm/task_script_test.py --darc build/darc --darc-slurm scripts/darc-slurm --scratch DIR
 """
@@ -23,6 +25,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from farm_images import same_image  # noqa: E402
 from farm_scene import frame_rib, write_sequence_rib  # noqa: E402
 
 EXIT_USAGE = 2
@@ -148,6 +151,57 @@ def test_rib_per_frame_and_own_threads(args, scratch: Path) -> None:
     status(args.darc_slurm, farm, expect=0)
 
 
+def test_tiled_frames(args, scratch: Path) -> None:
+    """--tiles 3 on two frames of the stochastic hider: the tasks render rows, the last tile of a
+    frame merges it into bitwise the image of a local darc run, and the tiles go; a frame whose
+    last tile was rendered but not merged (its task killed in between) is "not merged", and the
+    next submission only merges it."""
+    rib = scratch / "tiled.rib"
+    write_sequence_rib(rib, 2)
+    (scratch / "tiled-local").mkdir()
+    run([args.darc, "--quiet", "--hider", "stochastic", "-o", str(scratch / "tiled-local" / "f.####.exr"), str(rib)])
+    farm = scratch / "farm-tiled"
+    out = scratch / "out-tiled"
+    submit = [args.darc_slurm, "submit", "--dir", str(farm), "--frames", "1-2", "--tiles", "3", "--darc", args.darc,
+              "-o", str(out / "f.####.exr"), "--dry-run", str(rib), "--", "--hider", "stochastic"]
+    r = run(submit)
+    check("would submit 6 array tasks for frames 1-2 (6 tiles, 0 merges)" in r.stdout, r.stdout)
+    script = farm / "tasks" / "submit-1.sh"
+    for task in (0, 1, 2):  # frame 1's three rows: the third task merges them
+        run_task(script, task)
+    check(same_image(out / "f.0001.exr", scratch / "tiled-local" / "f.0001.exr") == "",
+          same_image(out / "f.0001.exr", scratch / "tiled-local" / "f.0001.exr"))
+    check(not list((farm / "tiles").glob("frame.0001.tile.*")), "frame 1's tiles are left after the merge")
+    log = (farm / "logs" / "frame.0001.tile.2.log").read_text()
+    check("'--crop' '0' '1' '0.3333333333333333' '0.6666666666666666'" in log, f"tile 2's crop:\n{log}")
+    merges = (farm / "logs" / "frame.0001.log").read_text()
+    check(merges.count("darc-slurm: frame 1 merge, task") == 3 and "merged 3 tiles into" in merges and
+          merges.count("tiles rendered; the task of the last one merges them") == 2, f"frame 1's merges:\n{merges}")
+
+    for task in (3, 4):  # frame 2's first two rows
+        run_task(script, task)
+    s = status(args.darc_slurm, farm, expect=1)
+    check(s["done"] == [1] and s["tiles"] == 3, f"status: {s}")
+    check(s["missing"][0]["reason"] == "2 of 3 tiles done; tile 3: not rendered" and
+          s["missing"][0]["tiles"] == {"done": [1, 2], "failed": [], "missing": [3]}, f"missing: {s['missing']}")
+    check("would submit 1 array tasks for frames 2 (1 tile, 0 merges)" in run(submit).stdout, "only tile 3 of frame 2")
+
+    # Frame 2's last row rendered as its task would, then the task killed before the merge.
+    crop = ["--crop", "0", "1", repr(2 / 3), "1"]
+    run([args.darc, "--quiet", "--frames", "2", "--hider", "stochastic", *crop,
+         "-o", str(farm / "tiles" / "frame.0002.tile.3.exr"), str(rib)])
+    s = status(args.darc_slurm, farm, expect=1)
+    check(s["missing"][0]["reason"] == "all 3 tiles done, not merged", f"missing: {s['missing']}")
+    r = run(submit)
+    check("would submit 1 array tasks for frames 2 (0 tiles, 1 merge)" in r.stdout, r.stdout)
+    run_task(script, 0)  # a dry run writes its script as submission 1 again: now only the merge
+    status(args.darc_slurm, farm, expect=0)
+    check(same_image(out / "f.0002.exr", scratch / "tiled-local" / "f.0002.exr") == "",
+          same_image(out / "f.0002.exr", scratch / "tiled-local" / "f.0002.exr"))
+    check(sorted(p.name for p in out.iterdir()) == ["f.0001.exr", "f.0002.exr"], f"{list(out.iterdir())}")
+    check("nothing to submit: 2 of 2 frames done" in run(submit).stdout, "a third submission")
+
+
 def test_usage_errors(args, scratch: Path) -> None:
     rib = scratch / "three.rib"
     base = [args.darc_slurm, "submit", "--dir", str(scratch / "farm-usage"), "--frames", "1-3", "--darc", args.darc,
@@ -159,6 +213,10 @@ def test_usage_errors(args, scratch: Path) -> None:
         (["-o", "f.#.exr", str(scratch / "nothing.rib")], "no such RIB file"),
         (["-o", "f.#.exr", "--chunk", "0", str(rib)], "--chunk must be at least 1"),
         (["-o", "f.#.exr", "-"], "cannot read RIB from standard input"),
+        (["-o", "f.#.exr", "--tiles", "0", str(rib)], "--tiles must be from 1 to 999"),
+        (["-o", "f.#.png", "--tiles", "2", str(rib)], "--tiles needs an EXR image"),
+        (["-o", "f.#.exr", "--tiles", "2", str(rib), "--", "--crop", "0", "1", "0", "1"], "not with --tiles"),
+        (["-o", "f.#.exr", "--tiles", "2", str(rib), "--", "--preview=p.#.png"], "not with --tiles"),
     ]
     for extra, message in cases:
         r = run(base + extra, expect=EXIT_USAGE)
@@ -169,6 +227,8 @@ def test_usage_errors(args, scratch: Path) -> None:
     check('--frames: bad frame list item "3-1"' in r.stderr, r.stderr)
     r = run([args.darc_slurm, "status", "--dir", str(scratch / "no-farm")], expect=EXIT_USAGE)
     check("is not a darc-slurm farm folder" in r.stderr, r.stderr)
+    r = run([args.darc_slurm, "merge", "--dir", str(scratch / "farm"), "--frame", "1"], expect=EXIT_USAGE)
+    check("its frames are not cut into tiles" in r.stderr, r.stderr)
 
 
 def main() -> int:
@@ -182,7 +242,8 @@ def main() -> int:
     shutil.rmtree(scratch, ignore_errors=True)
     scratch.mkdir(parents=True)
     os.chdir(scratch)  # relative -o names in the usage cases land here
-    tests = (test_failed_frames, test_interrupted_task, test_rib_per_frame_and_own_threads, test_usage_errors)
+    tests = (test_failed_frames, test_interrupted_task, test_rib_per_frame_and_own_threads, test_tiled_frames,
+             test_usage_errors)
     failures = 0
     for test in tests:
         try:
