@@ -3,6 +3,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include <array>
+#include <bit>
 #include <limits>
 
 namespace darc {
@@ -44,87 +45,221 @@ float half_area(const BBox& b) {
   return e.x * e.y + e.y * e.z + e.z * e.x;
 }
 
-struct Builder {
-  std::span<const BBox> boxes;
-  std::vector<Vec3f> centroids;
-  std::vector<uint32_t>& prims;
+// The boxes of a range of primitives: the union of their boxes, and the box of their centroids.
+struct RangeBounds {
+  BBox box, cbox;
+};
 
-  // Builds the subtree over prims[begin, end) into `out` (root at out[0], offsets relative to
-  // out[0]; leaf offsets are absolute indices into prims).
-  void build(uint32_t begin, uint32_t end, std::vector<BvhNode>& out) {
-    BBox box, cbox;
-    for (uint32_t i = begin; i < end; ++i) {
-      box.extend(boxes[prims[i]]);
-      cbox.extend(centroids[prims[i]]);
+// Boxes as four-lane rows (x, y, z and a lane the bounds ignore), so that a union is one
+// vector min and one max where the compiler vectorises (SSE2 is x86-64's baseline: no flag);
+// min and max are exact, so any lane order or width gives the same bounds.
+struct alignas(16) Lanes {
+  std::array<float, 4> v;
+};
+
+inline Lanes lane_min(const Lanes& a, const Lanes& b) {
+  Lanes r;
+  for (size_t k = 0; k < 4; ++k) r.v[k] = std::min(a.v[k], b.v[k]);
+  return r;
+}
+inline Lanes lane_max(const Lanes& a, const Lanes& b) {
+  Lanes r;
+  for (size_t k = 0; k < 4; ++k) r.v[k] = std::max(a.v[k], b.v[k]);
+  return r;
+}
+
+// An empty box in lanes: the identity of the union.
+constexpr float kEmptyLo = std::numeric_limits<float>::infinity();
+struct LaneBox {
+  Lanes lo{{kEmptyLo, kEmptyLo, kEmptyLo, kEmptyLo}};
+  Lanes hi{{-kEmptyLo, -kEmptyLo, -kEmptyLo, -kEmptyLo}};
+  void extend(const Lanes& l, const Lanes& h) {
+    lo = lane_min(lo, l);
+    hi = lane_max(hi, h);
+  }
+  void extend(const LaneBox& b) { extend(b.lo, b.hi); }
+  // Empty: BBox's own empty value (infinities the other way round), as the lanes start.
+  BBox box() const { return BBox{{lo.v[0], lo.v[1], lo.v[2]}, {hi.v[0], hi.v[1], hi.v[2]}}; }
+};
+
+// One SAH bin: the boxes and centroids of the primitives whose centroid falls in it.
+struct Bin {
+  LaneBox box, cbox;
+  uint32_t count = 0;
+};
+
+// Where a range splits: the axis, the first primitive of the right side, and both sides' bounds.
+struct Split {
+  int axis = -1;
+  uint32_t mid = 0;
+  RangeBounds left, right;
+};
+
+// A primitive as the build moves it: its box and its index, 32 bytes. The build partitions these
+// in place, so that a node's primitives lie together in memory (with indices into the scene's
+// boxes every pass gathered from all over them: most of the build's time went to those cache
+// misses). The index rides in the low row's unused lane as raw bits: bounds never read that lane,
+// and no arithmetic touches it (the centroid is computed on x, y, z only: as floats the bits are
+// denormals, which would stall additions).
+struct alignas(16) PrimRef {
+  Lanes lo, hi;
+  uint32_t id() const { return std::bit_cast<uint32_t>(lo.v[3]); }
+  // BBox::center()'s expression per axis: the bins are those of centroids stored apart.
+  Lanes centroid() const {
+    Lanes c{{0.0f, 0.0f, 0.0f, 0.0f}};
+    for (size_t k = 0; k < 3; ++k) c.v[k] = (lo.v[k] + hi.v[k]) * 0.5f;
+    return c;
+  }
+  static PrimRef of(const BBox& b, uint32_t id) {
+    PrimRef r;
+    r.lo = {{b.lo.x, b.lo.y, b.lo.z, std::bit_cast<float>(id)}};
+    r.hi = {{b.hi.x, b.hi.y, b.hi.z, 0.0f}};
+    return r;
+  }
+};
+static_assert(sizeof(PrimRef) == 32);
+
+// The binary tree's nodes in depth-first order, kept as chunks: a subtree built in parallel is a
+// list of its own, spliced in by moving its chunks. (Appending such subtrees into their parent's
+// array copied every node once per parallel level above it, and held the tree twice at the
+// root.) A node is found by its chunk and position, which splicing does not move.
+class NodeList {
+ public:
+  struct Slot {
+    size_t chunk = 0, index = 0;
+  };
+  size_t size() const { return size_; }
+  Slot push(const BvhNode& node) {
+    chunks_.back().push_back(node);
+    ++size_;
+    return Slot{chunks_.size() - 1, chunks_.back().size() - 1};
+  }
+  BvhNode& operator[](const Slot& s) { return chunks_[s.chunk][s.index]; }
+  void splice(NodeList&& other) {
+    size_ += other.size_;
+    for (std::vector<BvhNode>& c : other.chunks_)
+      if (!c.empty()) chunks_.push_back(std::move(c));
+    chunks_.emplace_back();
+  }
+  // The nodes in one array, each chunk freed once copied.
+  std::vector<BvhNode> take() {
+    std::vector<BvhNode> all;
+    all.reserve(size_);
+    for (std::vector<BvhNode>& c : chunks_) {
+      all.insert(all.end(), c.begin(), c.end());
+      std::vector<BvhNode>().swap(c);
     }
+    return all;
+  }
+
+ private:
+  std::vector<std::vector<BvhNode>> chunks_ = std::vector<std::vector<BvhNode>>(1);
+  size_t size_ = 0;
+};
+
+// The build makes one pass over a node's primitives to bin them on all three axes at once, and
+// each child gets its bounds from the bins of its side instead of from another pass over its
+// primitives (unions of boxes are exact, so they are the boxes such a pass would find): per
+// level, one pass and the partition, where binning each axis and then bounding each child took
+// five passes. The tree is the one those passes made, bit for bit (std::partition moves PrimRefs
+// as it moved indices).
+struct Builder {
+  std::vector<PrimRef>& refs;
+
+  RangeBounds bounds_of(uint32_t begin, uint32_t end) const {
+    LaneBox box, cbox;
+    for (uint32_t i = begin; i < end; ++i) {
+      box.extend(refs[i].lo, refs[i].hi);
+      const Lanes c = refs[i].centroid();
+      cbox.extend(c, c);
+    }
+    return RangeBounds{box.box(), cbox.box()};
+  }
+
+  // Appends the subtree over refs[begin, end), whose bounds are `bounds`, to `out` (interior
+  // offsets relative to the node; leaf offsets are absolute indices into prims).
+  void build(uint32_t begin, uint32_t end, const RangeBounds& bounds, NodeList& out) {
     const uint32_t n = end - begin;
     const size_t self = out.size();
-    out.push_back(BvhNode{box, begin, uint16_t(n), 0, 0});
+    const NodeList::Slot slot = out.push(BvhNode{bounds.box, begin, uint16_t(n), 0, 0});
     if (n <= 1) return;
-    int axis = -1;
-    uint32_t mid = 0;
-    if (!choose_split(begin, end, box, cbox, axis, mid)) {
+    Split split;
+    if (!choose_split(begin, end, bounds, split)) {
       if (n <= kMaxLeafSize) return;
       // No useful split (coincident centroids, or the SAH prefers a leaf that is too big):
       // halve by index, which keeps leaves small and the tree deterministic.
-      axis = 0;
-      mid = begin + n / 2;
+      split.axis = 0;
+      split.mid = begin + n / 2;
+      split.left = bounds_of(begin, split.mid);
+      split.right = bounds_of(split.mid, end);
     }
-    out[self].count = 0;
-    out[self].axis = uint8_t(axis);
+    out[slot].count = 0;
+    out[slot].axis = uint8_t(split.axis);
     if (n > kParallelThreshold) {
-      std::vector<BvhNode> left, right;
-      tbb::parallel_invoke([&] { build(begin, mid, left); }, [&] { build(mid, end, right); });
-      append(out, left);
-      out[self].offset = uint32_t(out.size() - self);
-      append(out, right);
+      NodeList left, right;
+      tbb::parallel_invoke([&] { build(begin, split.mid, split.left, left); },
+                           [&] { build(split.mid, end, split.right, right); });
+      out.splice(std::move(left));
+      out[slot].offset = uint32_t(out.size() - self);
+      out.splice(std::move(right));
     } else {
-      build(begin, mid, out);
-      out[self].offset = uint32_t(out.size() - self);
-      build(mid, end, out);
+      build(begin, split.mid, split.left, out);
+      out[slot].offset = uint32_t(out.size() - self);
+      build(split.mid, end, split.right, out);
     }
   }
 
-  // Appends a subtree built on its own (relative interior offsets stay valid).
-  static void append(std::vector<BvhNode>& out, const std::vector<BvhNode>& sub) {
-    out.insert(out.end(), sub.begin(), sub.end());
-  }
-
-  // The best binned SAH split of prims[begin, end); partitions the range and returns true when
-  // splitting beats a leaf (or the range is too large for one).
-  bool choose_split(uint32_t begin, uint32_t end, const BBox& box, const BBox& cbox, int& best_axis,
-                    uint32_t& mid) {
+  // The best binned SAH split of refs[begin, end); partitions the range, sets both sides'
+  // bounds and returns true when splitting beats a leaf (or the range is too large for one).
+  bool choose_split(uint32_t begin, uint32_t end, const RangeBounds& bounds, Split& split) {
     const uint32_t n = end - begin;
-    float best_cost = std::numeric_limits<float>::infinity();
-    int best_bin = -1;
-    best_axis = -1;
+    const BBox& cbox = bounds.cbox;
+    std::array<std::array<Bin, kBins>, 3> bins;
+    std::array<float, 3> lo{}, scale{};
+    std::array<bool, 3> binned{};
     for (int axis = 0; axis < 3; ++axis) {
-      float lo = cbox.lo[axis], extent = cbox.hi[axis] - cbox.lo[axis];
-      if (!(extent > 0.0f)) continue;
-      float scale = float(kBins) / extent;
-      std::array<BBox, kBins> bin_box;
-      std::array<uint32_t, kBins> bin_count{};
-      for (uint32_t i = begin; i < end; ++i) {
-        int b = std::min(kBins - 1, int((centroids[prims[i]][axis] - lo) * scale));
-        bin_box[b].extend(boxes[prims[i]]);
-        ++bin_count[b];
+      lo[size_t(axis)] = cbox.lo[axis];
+      const float extent = cbox.hi[axis] - cbox.lo[axis];
+      binned[size_t(axis)] = extent > 0.0f;
+      scale[size_t(axis)] = binned[size_t(axis)] ? float(kBins) / extent : 0.0f;
+    }
+    auto bin_of = [&](const Lanes& c, int axis) {
+      return std::min(kBins - 1, int((c.v[size_t(axis)] - lo[size_t(axis)]) * scale[size_t(axis)]));
+    };
+    for (uint32_t i = begin; i < end; ++i) {
+      const PrimRef& r = refs[i];
+      const Lanes c = r.centroid();
+      for (int axis = 0; axis < 3; ++axis) {
+        if (!binned[size_t(axis)]) continue;
+        Bin& bin = bins[size_t(axis)][size_t(bin_of(c, axis))];
+        bin.box.extend(r.lo, r.hi);
+        bin.cbox.extend(c, c);
+        ++bin.count;
       }
+    }
+    float best_cost = std::numeric_limits<float>::infinity();
+    int best_bin = -1, best_axis = -1;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!binned[size_t(axis)]) continue;
+      std::array<BBox, kBins> bin_box;
+      for (size_t k = 0; k < size_t(kBins); ++k) bin_box[k] = bins[size_t(axis)][k].box.box();
+      const std::array<Bin, kBins>& bin = bins[size_t(axis)];
       // Sweep: cost of splitting after bin k = area(left) * count(left) + area(right) * count(right).
       std::array<float, kBins> right_cost{};
       BBox acc;
       uint32_t count = 0;
       for (int k = kBins - 1; k > 0; --k) {
-        acc.extend(bin_box[k]);
-        count += bin_count[k];
-        right_cost[k] = half_area(acc) * float(count);
+        acc.extend(bin_box[size_t(k)]);
+        count += bin[size_t(k)].count;
+        right_cost[size_t(k)] = half_area(acc) * float(count);
       }
       acc = BBox{};
       count = 0;
       for (int k = 0; k < kBins - 1; ++k) {
-        acc.extend(bin_box[k]);
-        count += bin_count[k];
+        acc.extend(bin_box[size_t(k)]);
+        count += bin[size_t(k)].count;
         if (count == 0 || count == n) continue;
-        float cost = half_area(acc) * float(count) + right_cost[k + 1];
+        float cost = half_area(acc) * float(count) + right_cost[size_t(k + 1)];
         if (cost < best_cost) {
           best_cost = cost;
           best_bin = k;
@@ -133,19 +268,26 @@ struct Builder {
       }
     }
     if (best_axis < 0) return false;
-    const float parent_area = half_area(box);
+    const float parent_area = half_area(bounds.box);
     const float split_cost =
         kTraversalCost + kPrimitiveCost * (parent_area > 0.0f ? best_cost / parent_area : float(n));
     if (n <= kMaxLeafSize && split_cost >= kPrimitiveCost * float(n)) return false;
-    const float lo = cbox.lo[best_axis], scale = float(kBins) / (cbox.hi[best_axis] - lo);
-    auto in_left = [&](uint32_t p) {
-      return std::min(kBins - 1, int((centroids[p][best_axis] - lo) * scale)) <= best_bin;
-    };
+    auto in_left = [&](const PrimRef& p) { return bin_of(p.centroid(), best_axis) <= best_bin; };
     // std::partition is deterministic (no allocation, no randomness): the tree is a pure
     // function of the boxes.
-    uint32_t* first = prims.data() + begin;
-    mid = uint32_t(std::partition(first, prims.data() + end, in_left) - prims.data());
-    return mid > begin && mid < end;
+    PrimRef* first = refs.data() + begin;
+    split.axis = best_axis;
+    split.mid = uint32_t(std::partition(first, refs.data() + end, in_left) - refs.data());
+    LaneBox sides[2][2];  // [left, right][box, cbox]
+    for (int k = 0; k < kBins; ++k) {
+      const Bin& bin = bins[size_t(best_axis)][size_t(k)];
+      LaneBox* side = sides[k <= best_bin ? 0 : 1];
+      side[0].extend(bin.box);
+      side[1].extend(bin.cbox);
+    }
+    split.left = RangeBounds{sides[0][0].box(), sides[0][1].box()};
+    split.right = RangeBounds{sides[1][0].box(), sides[1][1].box()};
+    return split.mid > begin && split.mid < end;
   }
 };
 
@@ -209,15 +351,20 @@ struct Collapser {
 
 Bvh Bvh::build(std::span<const BBox> prim_bounds) {
   Bvh bvh;
-  for (uint32_t i = 0; i < prim_bounds.size(); ++i)
-    if (valid_box(prim_bounds[i])) bvh.prims_.push_back(i);
-  if (bvh.prims_.empty()) return bvh;
   std::vector<BvhNode> binary;
   {
-    Builder builder{prim_bounds, std::vector<Vec3f>(prim_bounds.size()), bvh.prims_};
-    for (uint32_t p : bvh.prims_) builder.centroids[p] = prim_bounds[p].center();
-    binary.reserve(2 * bvh.prims_.size());
-    builder.build(0, uint32_t(bvh.prims_.size()), binary);
+    std::vector<PrimRef> refs;
+    refs.reserve(prim_bounds.size());
+    for (uint32_t i = 0; i < prim_bounds.size(); ++i)
+      if (valid_box(prim_bounds[i])) refs.push_back(PrimRef::of(prim_bounds[i], i));
+    if (refs.empty()) return bvh;
+    Builder builder{refs};
+    NodeList nodes;
+    builder.build(0, uint32_t(refs.size()), builder.bounds_of(0, uint32_t(refs.size())), nodes);
+    bvh.prims_.resize(refs.size());
+    for (size_t i = 0; i < refs.size(); ++i) bvh.prims_[i] = refs[i].id();
+    std::vector<PrimRef>().swap(refs);
+    binary = nodes.take();
   }
   // Offsets of interior nodes were relative to the node; make them absolute.
   for (uint32_t i = 0; i < binary.size(); ++i)
@@ -226,7 +373,6 @@ Bvh Bvh::build(std::span<const BBox> prim_bounds) {
   bvh.nodes_.reserve(binary.size() / 2 + 1);
   Collapser{binary, bvh.nodes_}.collapse(0);
   bvh.nodes_.shrink_to_fit();
-  bvh.prims_.shrink_to_fit();
   return bvh;
 }
 
