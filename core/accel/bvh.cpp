@@ -84,7 +84,7 @@ struct LaneBox {
 
 // One SAH bin: the boxes and centroids of the primitives whose centroid falls in it.
 struct Bin {
-  LaneBox box, cbox;
+  LaneBox box;
   uint32_t count = 0;
 };
 
@@ -233,7 +233,6 @@ struct Builder {
         if (!binned[size_t(axis)]) continue;
         Bin& bin = bins[size_t(axis)][size_t(bin_of(c, axis))];
         bin.box.extend(r.lo, r.hi);
-        bin.cbox.extend(c, c);
         ++bin.count;
       }
     }
@@ -272,22 +271,48 @@ struct Builder {
     const float split_cost =
         kTraversalCost + kPrimitiveCost * (parent_area > 0.0f ? best_cost / parent_area : float(n));
     if (n <= kMaxLeafSize && split_cost >= kPrimitiveCost * float(n)) return false;
-    auto in_left = [&](const PrimRef& p) { return bin_of(p.centroid(), best_axis) <= best_bin; };
-    // std::partition is deterministic (no allocation, no randomness): the tree is a pure
-    // function of the boxes.
-    PrimRef* first = refs.data() + begin;
     split.axis = best_axis;
-    split.mid = uint32_t(std::partition(first, refs.data() + end, in_left) - refs.data());
-    LaneBox sides[2][2];  // [left, right][box, cbox]
-    for (int k = 0; k < kBins; ++k) {
-      const Bin& bin = bins[size_t(best_axis)][size_t(k)];
-      LaneBox* side = sides[k <= best_bin ? 0 : 1];
-      side[0].extend(bin.box);
-      side[1].extend(bin.cbox);
-    }
-    split.left = RangeBounds{sides[0][0].box(), sides[0][1].box()};
-    split.right = RangeBounds{sides[1][0].box(), sides[1][1].box()};
+    split.mid = partition(begin, end, [&](const Lanes& c) { return bin_of(c, best_axis) <= best_bin; }, split);
     return split.mid > begin && split.mid < end;
+  }
+
+  // Hoare's partition of refs[begin, end) by `in_left` (of a centroid), as libstdc++'s
+  // std::partition does it, so that the tree is the one the build made with it, and a pure
+  // function of the boxes whatever the standard library. It judges every primitive exactly once,
+  // and then adds it to its side's bounds: the children's bounds come with the partition, not
+  // from another pass. Returns the first primitive of the right side.
+  template <typename InLeft>
+  uint32_t partition(uint32_t begin, uint32_t end, const InLeft& in_left, Split& split) {
+    LaneBox box[2], cbox[2];  // [left, right]
+    auto judge = [&](const PrimRef& r) {
+      const Lanes c = r.centroid();
+      const bool left = in_left(c);
+      box[left ? 0 : 1].extend(r.lo, r.hi);
+      cbox[left ? 0 : 1].extend(c, c);
+      return left;
+    };
+    PrimRef* first = refs.data() + begin;
+    PrimRef* last = refs.data() + end;
+    while (first != last) {
+      if (judge(*first)) {
+        ++first;
+        continue;
+      }
+      // *first goes right: from the back, the next one that goes left takes its place.
+      bool swapped = false;
+      while (first != --last) {
+        if (judge(*last)) {
+          std::swap(*first, *last);
+          ++first;
+          swapped = true;
+          break;
+        }
+      }
+      if (!swapped) break;
+    }
+    split.left = RangeBounds{box[0].box(), cbox[0].box()};
+    split.right = RangeBounds{box[1].box(), cbox[1].box()};
+    return uint32_t(first - refs.data());
   }
 };
 
