@@ -15,8 +15,9 @@
 namespace darc {
 
 // A curve segment: its CurveSet entry (81 B measured: control points, width, ids, flags, the
-// arrays' slack) and the peak of the BVH build over it (243 B: the boxes, centroids and binary
-// tree the 4-wide BVH is collapsed from; 49 B of it stay), 324 B in all, rounded up.
+// arrays' slack) and the peak of the BVH build over it (218 B: the boxes, the build's references
+// and the binary tree the 4-wide BVH is collapsed from; 49 B of it stay), 299 B in all; 336 was
+// 324 rounded up when the build's peak was 243 B, and stays as a margin (docs/memory.md).
 inline constexpr uint64_t kFrameBytesPerCurveSegment = 336;
 // A sphere or a polygon: the shape, its material index, and its share of the BVH and its build.
 inline constexpr uint64_t kFrameBytesPerSurface = 512;
