@@ -110,6 +110,24 @@ std::string textured_view(const std::string& texture) {
          texture + "\"] \"Kd\" [0] \"Ks\" [0]\n";
 }
 
+// The quadrants texture on a square whose st is mirrored in s (s = 1 at its left, 0 at its
+// right; t = 0 at its top): top left bright blue, top right bright red, bottom right dim red.
+void expect_mirrored_quadrants(const Image& m, HiderKind hider) {
+  EXPECT_NEAR(m.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // top left: bright blue
+  EXPECT_NEAR(m.at(1, 1, 0), 0.0f, 0.02f) << to_string(hider);
+  EXPECT_NEAR(m.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // top right: bright red
+  EXPECT_NEAR(m.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // bottom right: dim red
+}
+
+// Two patches (or segments) side by side whose s runs 0.5 to 1 over the left one and 1 to 0 over
+// the right one, t 0 at the top: the left one blue, the right one blue then red past its middle.
+void expect_s_runs_over_two_patches(const Image& p, HiderKind hider) {
+  EXPECT_NEAR(p.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // left one, top: bright blue
+  EXPECT_NEAR(p.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // right one, top (s 0.375): bright red
+  EXPECT_NEAR(p.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // right one, bottom: dim red
+  EXPECT_NEAR(p.at(5, 1, 2), 1.0f, 0.02f) << to_string(hider);  // s 0.625 there: bright blue
+}
+
 // Curves read textures by their "st" (or "s", "t") primvars: uniform st gives a strand one texel
 // (a scalp map), vertex st follows the strand. The quadrants texture: (s, t) < (0.5, 0.5) bright
 // red, s > 0.5 bright blue, t > 0.5 the dim halves (0.5).
@@ -165,16 +183,8 @@ TEST(TextureRender, APatchsStPrimvarMapsItsCorners) {
                                   "\"P\" [-1 1 0  0 1 0  1 1 0  -1 -1 0  0 -1 0  1 -1 0] "
                                   "\"varying float s\" [0.5 1 0  0.5 1 0] \"varying float t\" [0 0 0  1 1 1]\nWorldEnd\n";
   for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
-    const Image m = render_image(mirrored, hider);
-    EXPECT_NEAR(m.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // top left: bright blue
-    EXPECT_NEAR(m.at(1, 1, 0), 0.0f, 0.02f) << to_string(hider);
-    EXPECT_NEAR(m.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // top right: bright red
-    EXPECT_NEAR(m.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // bottom right: dim red
-    const Image p = render_image(mesh, hider);
-    EXPECT_NEAR(p.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // left patch, top: bright blue
-    EXPECT_NEAR(p.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // right patch, top (s 0.375): bright red
-    EXPECT_NEAR(p.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // right patch, bottom: dim red
-    EXPECT_NEAR(p.at(5, 1, 2), 1.0f, 0.02f) << to_string(hider);  // s 0.625 there: bright blue
+    expect_mirrored_quadrants(render_image(mirrored, hider), hider);
+    expect_s_runs_over_two_patches(render_image(mesh, hider), hider);
   }
 }
 
@@ -192,18 +202,8 @@ TEST(TextureRender, ANuPatchsStPrimvarMapsItsSegmentCorners) {
                                       "\"P\" [-1 1 0  0 1 0  1 1 0  -1 -1 0  0 -1 0  1 -1 0] "
                                       "\"varying float s\" [0.5 1 0  0.5 1 0] \"varying float t\" [0 0 0  1 1 1]\nWorldEnd\n";
   for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
-    for (const std::string* rib : {&varying, &vertex}) {
-      const Image m = render_image(*rib, hider);
-      EXPECT_NEAR(m.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // top left: bright blue
-      EXPECT_NEAR(m.at(1, 1, 0), 0.0f, 0.02f) << to_string(hider);
-      EXPECT_NEAR(m.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // top right: bright red
-      EXPECT_NEAR(m.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // bottom right: dim red
-    }
-    const Image p = render_image(segments, hider);
-    EXPECT_NEAR(p.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // left segment, top: bright blue
-    EXPECT_NEAR(p.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // right segment, top (s 0.375): bright red
-    EXPECT_NEAR(p.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // right segment, bottom: dim red
-    EXPECT_NEAR(p.at(5, 1, 2), 1.0f, 0.02f) << to_string(hider);  // s 0.625 there: bright blue
+    for (const std::string* rib : {&varying, &vertex}) expect_mirrored_quadrants(render_image(*rib, hider), hider);
+    expect_s_runs_over_two_patches(render_image(segments, hider), hider);
   }
 }
 
@@ -246,10 +246,7 @@ TEST(TextureRender, ASubdivisionMeshReadsItsSt) {
   for (HiderKind hider : {HiderKind::Distance, HiderKind::Stochastic}) {
     for (const std::string* rib : {&facevarying, &vertex}) {
       const Image m = render_image(*rib, hider);
-      EXPECT_NEAR(m.at(1, 1, 2), 1.0f, 0.02f) << to_string(hider);  // top left: bright blue
-      EXPECT_NEAR(m.at(1, 1, 0), 0.0f, 0.02f) << to_string(hider);
-      EXPECT_NEAR(m.at(6, 1, 0), 1.0f, 0.02f) << to_string(hider);  // top right: bright red
-      EXPECT_NEAR(m.at(6, 6, 0), 0.5f, 0.02f) << to_string(hider);  // bottom right: dim red
+      expect_mirrored_quadrants(m, hider);
       EXPECT_NEAR(m.at(1, 6, 2), 0.5f, 0.02f) << to_string(hider);  // bottom left: dim blue
     }
     const Image u = render_image(uniform, hider);

@@ -46,6 +46,18 @@ void add_tag(SubdivisionMeshRequest& r, const std::string& tag, std::vector<int>
   r.floatargs.insert(r.floatargs.end(), floats.begin(), floats.end());
 }
 
+// A pentagon with a triangle beside it (n-gons, an extraordinary vertex), in z = 0 wound for +z,
+// its boundary interpolated.
+SubdivisionMeshRequest pentagon_beside_a_triangle() {
+  SubdivisionMeshRequest r;
+  r.scheme = "catmull-clark";
+  r.P = {{0, 0, 0}, {2, 0, 0}, {3, 1, 0}, {1, 2, 0}, {-1, 1, 0}, {4, 3, 0}};
+  r.nvertices = {5, 3};
+  r.vertices = {0, 1, 2, 3, 4, 2, 5, 3};
+  add_tag(r, "interpolateboundary", {}, {});
+  return r;
+}
+
 void crease_every_cube_edge(SubdivisionMeshRequest& r, float sharpness) {
   for (auto [a, b] :
        {std::pair{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}) {
@@ -213,12 +225,7 @@ TEST(SubdivisionSurface, PlanarFansAroundExtraordinaryVerticesStayPlanar) {
     for (const Vec3f& n : t.mesh.N) EXPECT_NEAR(length(n - Vec3f{0, 0, 1}), 0.0f, 1e-5f);
     EXPECT_TRUE(has_point(t.mesh, {0, 0, 0}));  // the centre's limit, by symmetry
   }
-  SubdivisionMeshRequest r;
-  r.scheme = "catmull-clark";
-  r.P = {{0, 0, 0}, {2, 0, 0}, {3, 1, 0}, {1, 2, 0}, {-1, 1, 0}, {4, 3, 0}};
-  r.nvertices = {5, 3};
-  r.vertices = {0, 1, 2, 3, 4, 2, 5, 3};
-  add_tag(r, "interpolateboundary", {}, {});
+  SubdivisionMeshRequest r = pentagon_beside_a_triangle();
   SubdivisionTessellation t = tessellate_subdivision_mesh(r);
   ASSERT_TRUE(t.ok()) << t.error;
   expect_well_formed(t.mesh);
@@ -339,12 +346,7 @@ TEST(SubdivisionSurface, BilinearIsTheControlMesh) {
 // given as an affine map of P is that map of the limit position at every emitted vertex,
 // on a mesh with extraordinary vertices and a crease.
 TEST(SubdivisionSurface, VertexStIsSubdividedLikeP) {
-  SubdivisionMeshRequest r;
-  r.scheme = "catmull-clark";
-  r.P = {{0, 0, 0}, {2, 0, 0}, {3, 1, 0}, {1, 2, 0}, {-1, 1, 0}, {4, 3, 0}};
-  r.nvertices = {5, 3};
-  r.vertices = {0, 1, 2, 3, 4, 2, 5, 3};
-  add_tag(r, "interpolateboundary", {}, {});
+  SubdivisionMeshRequest r = pentagon_beside_a_triangle();
   add_tag(r, "crease", {2, 3}, {1.5f});
   auto st_of = [](const Vec3f& p) { return Vec2f{0.25f * p.x + 0.1f * p.y + 0.5f, -0.2f * p.y + 0.05f * p.x}; };
   for (const Vec3f& p : r.P) r.vertex_st.push_back(st_of(p));
