@@ -53,13 +53,17 @@ struct BvhScratch {
   std::vector<BvhQueueEntry> queue;
 };
 
+enum class BvhBuildPath { Simd, Portable };
+
 class Bvh {
  public:
   Bvh() = default;
 
   // Builds over prim_bounds[i] for primitive index i. Empty and non-finite boxes are left out.
-  // Deterministic: the same boxes give the same tree for any thread count.
-  static Bvh build(std::span<const BBox> prim_bounds);
+  // Deterministic: the same boxes give the same tree for any thread count, and on either path
+  // (Simd: box unions with SSE where the machine has it; Portable: plain loops; bitwise the same
+  // tree, tested).
+  static Bvh build(std::span<const BBox> prim_bounds, BvhBuildPath path = BvhBuildPath::Simd);
 
   bool empty() const { return nodes_.empty(); }
   std::span<const Bvh4Node> nodes() const { return nodes_; }

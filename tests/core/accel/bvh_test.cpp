@@ -143,22 +143,55 @@ TEST(Bvh, EmptyAndDegenerateInputsVisitNothing) {
   EXPECT_EQ(calls, 0);
 }
 
-TEST(Bvh, BuildIsAPureFunctionOfTheBoxes) {
-  std::mt19937 rng(5);
+// Enough boxes to take the parallel path (subtrees over the parallel threshold).
+std::vector<BBox> many_random_boxes(uint32_t seed) {
+  std::mt19937 rng(seed);
   std::vector<BBox> boxes;
-  // Enough boxes to take the parallel path (subtrees over the parallel threshold).
   for (int k = 0; k < 60; ++k) {
     std::vector<BBox> more = random_boxes(rng);
     boxes.insert(boxes.end(), more.begin(), more.end());
   }
-  Bvh a = Bvh::build(boxes), b = Bvh::build(boxes);
+  return boxes;
+}
+
+// Two trees are the same to the bit: nodes (children, counts, boxes with their signs of zero)
+// and the primitives' order.
+void expect_same_tree(const Bvh& a, const Bvh& b) {
   ASSERT_EQ(a.nodes().size(), b.nodes().size());
+  ASSERT_EQ(a.primitives().size(), b.primitives().size());
   EXPECT_TRUE(std::equal(a.primitives().begin(), a.primitives().end(), b.primitives().begin()));
-  for (size_t i = 0; i < a.nodes().size(); ++i)
+  auto bits = [](const Slab4Boxes& x) {
+    std::array<uint32_t, 24> out{};
+    const float* f = x.lo_x;
+    for (size_t i = 0; i < out.size(); ++i) out[i] = std::bit_cast<uint32_t>(f[i]);
+    return out;
+  };
+  for (size_t i = 0; i < a.nodes().size(); ++i) {
     for (int k = 0; k < 4; ++k) {
       EXPECT_EQ(a.nodes()[i].child[k], b.nodes()[i].child[k]);
       EXPECT_EQ(a.nodes()[i].count[k], b.nodes()[i].count[k]);
     }
+    EXPECT_EQ(bits(a.nodes()[i].boxes), bits(b.nodes()[i].boxes)) << "node " << i;
+  }
+}
+
+TEST(Bvh, BuildIsAPureFunctionOfTheBoxes) {
+  const std::vector<BBox> boxes = many_random_boxes(5);
+  expect_same_tree(Bvh::build(boxes), Bvh::build(boxes));
+}
+
+// The build's SIMD box unions (SSE on x86-64) make bitwise the tree of its portable loops: on
+// random boxes, on boxes whose corners are signed zeros (min and max must pick the zero the
+// portable std::min and std::max pick), and on coincident centroids.
+TEST(Bvh, SimdBuildIsBitwiseThePortableOne) {
+  std::vector<BBox> boxes = many_random_boxes(6);
+  for (int i = 0; i < 3000; ++i) {
+    const float z = (i % 2 == 0) ? 0.0f : -0.0f;
+    const float a = float(i % 7) * 0.25f;
+    boxes.push_back(BBox{{z, -a, z}, {a, (i % 3 == 0) ? -0.0f : 0.0f, a}});
+  }
+  for (int i = 0; i < 500; ++i) boxes.push_back(BBox{{-1, -1, -1}, {1, 1, 1}});
+  expect_same_tree(Bvh::build(boxes, BvhBuildPath::Simd), Bvh::build(boxes, BvhBuildPath::Portable));
 }
 
 // The SIMD slab test gives bitwise the results of the portable one, on random boxes and rays,
